@@ -1,0 +1,27 @@
+// The contact state of two Box2D bodies as Box2D's own narrow phase sees it
+// at their current transforms: the same b2Collide* functions and
+// b2WorldManifold the solver uses at the start of the next step, and
+// b2Distance (GJK) for the gap while they are apart.
+#pragma once
+
+#include <box2d/b2_body.h>
+
+#include "planarbench/case.hpp"
+
+namespace pb::internal::box2d {
+
+struct ContactGeometry {
+  bool valid = false;           // some fixture pair of the two bodies was measured
+  bool touching = false;        // some manifold has points: Box2D's solver sees a contact
+  double penetration_m = 0.0;   // m, > 0 overlap of the skinned surfaces, < 0 gap
+  Vec2 normal = Vec2::Zero();   // unit, from body a to body b
+  Vec2 point_m = Vec2::Zero();  // m, midpoint of the two bodies' surface points
+};
+
+// Deepest point over every fixture (and chain child) pair of a and b while
+// some manifold has points (penetration = -b2WorldManifold::separations, the
+// radii included); otherwise the closest pair (b2Distance without radii, the
+// radii subtracted), so the penetration is continuous through touch-down.
+[[nodiscard]] ContactGeometry probe_contact(const b2Body& a, const b2Body& b);
+
+}  // namespace pb::internal::box2d

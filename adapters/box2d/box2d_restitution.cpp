@@ -1,0 +1,88 @@
+#include "box2d_restitution.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <variant>
+
+#include "planarbench/contact_law_response.hpp"
+
+namespace pb::internal::box2d {
+
+namespace {
+double cross(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+}  // namespace
+
+double inverse_effective_mass(const BodyInertia& body, const Vec2& p_m, const Vec2& n) {
+  if (body.fixed) return 0.0;
+  if (body.pinned) {
+    const double lever = cross(p_m - body.pivot_m, n);  // m
+    const double inertia_pivot =
+        body.inertia_kgm2 + body.mass_kg * (body.centre_m - body.pivot_m).squaredNorm();
+    return lever * lever / inertia_pivot;
+  }
+  const double lever = cross(p_m - body.centre_m, n);  // m
+  return 1.0 / body.mass_kg + lever * lever / body.inertia_kgm2;
+}
+
+double effective_mass_kg(const BodyInertia& a, const BodyInertia& b, const Vec2& p_m,
+                         const Vec2& n) {
+  const double inv = inverse_effective_mass(a, p_m, n) + inverse_effective_mass(b, p_m, n);
+  return inv > 0.0 ? 1.0 / inv : std::numeric_limits<double>::infinity();
+}
+
+namespace {
+bool closed_form(const ContactLaw& law) {
+  const auto* kv = std::get_if<KelvinVoigt>(&law);
+  return kv != nullptr && kv->damping_depth_m == 0.0;
+}
+}  // namespace
+
+double law_restitution(const ContactLaw& law, double m_eff_kg, double v_approach_mps) {
+  const double v = std::max(v_approach_mps, kMinApproachSpeed_mps);
+  if (closed_form(law)) {
+    const auto& kv = std::get<KelvinVoigt>(law);
+    return kelvin_voigt_response(kv.stiffness_n_per_m, kv.damping_ns_per_m, m_eff_kg, v)
+        .restitution;
+  }
+  return simulate_collision(law, m_eff_kg, v).restitution;
+}
+
+std::string law_restitution_method(const ContactLaw& law) {
+  if (closed_form(law)) {
+    return "kelvin_voigt_response: clamped Kelvin-Voigt closed form, e = exp(-zeta (pi - 2 asin "
+           "zeta) / sqrt(1 - zeta^2)), zeta = c / (2 sqrt(k m_eff)), no gravity";
+  }
+  return "simulate_collision: the restitution the law really produces in one collision of m_eff "
+         "against a fixed surface at the approach speed (RK4, no gravity)";
+}
+
+double elastic_contact_duration_s(const ContactLaw& law, double m_eff_kg, double v_approach_mps) {
+  double stiffness = 0.0;  // N/m^n
+  double n = 1.0;
+  if (const auto* kv = std::get_if<KelvinVoigt>(&law)) {
+    stiffness = kv->stiffness_n_per_m;
+  } else if (const auto* hz = std::get_if<Hertz>(&law)) {
+    stiffness = hz->stiffness;
+    n = hz->exponent;
+  } else {
+    const auto& ln = std::get<LankaraniNikravesh>(law);
+    stiffness = ln.stiffness;
+    n = ln.exponent;
+  }
+  const double v = std::max(v_approach_mps, kMinApproachSpeed_mps);
+  const double delta_max =
+      std::pow((n + 1.0) * m_eff_kg * v * v / (2.0 * stiffness), 1.0 / (n + 1.0));
+  const double c_n = 2.0 * std::sqrt(std::numbers::pi) * std::tgamma(1.0 + 1.0 / (n + 1.0)) /
+                     std::tgamma(0.5 + 1.0 / (n + 1.0));
+  return c_n * delta_max / v;
+}
+
+bool restitution_depends_on_state(const ContactLaw& law) {
+  return std::holds_alternative<KelvinVoigt>(law);
+}
+
+}  // namespace pb::internal::box2d

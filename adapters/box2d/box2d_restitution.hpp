@@ -1,0 +1,68 @@
+// Box2D is rigid: a compliant contact law is expressed by the restitution it
+// produces. This file computes that restitution for a law, an effective mass
+// and an approach speed, and the effective mass J M^-1 J^T of a contact.
+#pragma once
+
+#include <string>
+
+#include "planarbench/case.hpp"
+
+namespace pb::internal::box2d {
+
+// how a body responds to an impulse: fixed, free, or pinned to the ground by
+// one revolute joint
+struct BodyInertia {
+  bool fixed = false;
+  double mass_kg = 0.0;          // kg
+  double inertia_kgm2 = 0.0;     // kg m^2 about the centre of mass
+  Vec2 centre_m = Vec2::Zero();  // m, centre of mass, world
+  bool pinned = false;
+  Vec2 pivot_m = Vec2::Zero();  // m, the joint's world anchor when pinned
+};
+
+// J M^-1 J^T for a unit impulse along the unit normal n at world point p, 1/kg
+// (constrained dynamics, e.g. Featherstone, Rigid Body Dynamics Algorithms, §11):
+//   fixed: 0; free: 1/m + ((p - c) x n)^2 / I;
+//   pinned at q: ((p - q) x n)^2 / (I + m |c - q|^2)  (rotation about q only).
+[[nodiscard]] double inverse_effective_mass(const BodyInertia& body, const Vec2& p_m,
+                                            const Vec2& n);
+
+// m_eff = 1 / (J_a M_a^-1 J_a^T + J_b M_b^-1 J_b^T), kg; infinite when neither
+// body can move along n
+[[nodiscard]] double effective_mass_kg(const BodyInertia& a, const BodyInertia& b, const Vec2& p_m,
+                                       const Vec2& n);
+
+// approach speeds below this are raised to it before the law is evaluated, m/s
+// (simulate_collision needs v > 0; the restitution of Kelvin-Voigt without
+// ramp, Hertz and Lankarani-Nikravesh does not depend on v)
+constexpr double kMinApproachSpeed_mps = 1e-3;
+
+// The restitution the law produces in one collision of m_eff against a fixed
+// surface at approach speed v, without gravity:
+//   Kelvin-Voigt without ramp: kelvin_voigt_response (closed form of the
+//     clamped oscillator; depends on m_eff through zeta = c / (2 sqrt(k m)));
+//   everything else: simulate_collision (the restitution the law really
+//     produces, e.g. Lankarani-Nikravesh's is not its nominal e).
+// No allocation: safe inside Box2D's contact callbacks.
+[[nodiscard]] double law_restitution(const ContactLaw& law, double m_eff_kg, double v_approach_mps);
+
+// how law_restitution computes the restitution of this law, for the mapping
+[[nodiscard]] std::string law_restitution_method(const ContactLaw& law);
+
+// s, the duration of an elastic collision with the law's spring part,
+// F = K delta^n (n = 1 for Kelvin-Voigt): with delta_max from the energy
+// balance m v^2 / 2 = K delta_max^(n+1) / (n+1), the time in contact is
+// c_n delta_max / v, c_n = 2 sqrt(pi) Gamma(1 + 1/(n+1)) / Gamma(1/2 + 1/(n+1))
+// (pi for n = 1, i.e. pi sqrt(m/k); 2.943 for Hertz, n = 3/2; Johnson,
+// Contact Mechanics, §11.4). Closed form: an estimate of the steps a contact
+// takes, safe for any parameters.
+[[nodiscard]] double elastic_contact_duration_s(const ContactLaw& law, double m_eff_kg,
+                                                double v_approach_mps);
+
+// true when the law's restitution changes with m_eff or v. Hertz and
+// Lankarani-Nikravesh do not: with delta = D x, t = (D / v) tau,
+// D = (m v^2 / K)^(1/(n+1)), eq. 7 becomes x'' = -x^n (1 + 3 (1 - e^2)/4 x'),
+// x'(0) = 1, free of K, m and v.
+[[nodiscard]] bool restitution_depends_on_state(const ContactLaw& law);
+
+}  // namespace pb::internal::box2d

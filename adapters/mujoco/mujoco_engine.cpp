@@ -1,0 +1,501 @@
+// The mujoco adapter: engine "mujoco" (MuJoCo 2.2.2, Debian's libmujoco-dev).
+// A case becomes MJCF text (mujoco_mjcf), loaded from memory; each step is
+// MuJoCo's own mj_step in two halves so that the state a step starts from is
+// sampled (mujoco_stepping). Native mode maps the case's law onto MuJoCo's
+// soft contact (mujoco_contact_mapping), calibrated at each pair's first touch
+// found by a contact-free probe run (mujoco_probe); inject mode applies the
+// case's own law at MuJoCo's contact geometry (mujoco_injector).
+#include "planarbench/adapters/mujoco_engine.hpp"
+
+#include <fmt/format.h>
+#include <mujoco/mujoco.h>
+
+#include <cmath>
+#include <optional>
+
+#include "mujoco_contact_mapping.hpp"
+#include "mujoco_exact_depth.hpp"
+#include "mujoco_frame.hpp"
+#include "mujoco_geometry.hpp"
+#include "mujoco_injector.hpp"
+#include "mujoco_mjcf.hpp"
+#include "mujoco_model.hpp"
+#include "mujoco_pair_state.hpp"
+#include "mujoco_probe.hpp"
+#include "mujoco_settings.hpp"
+#include "mujoco_stepping.hpp"
+#include "mujoco_support.hpp"
+#include "planarbench/contact_law_response.hpp"
+#include "planarbench/episode_tracker.hpp"
+#include "planarbench/errors.hpp"
+
+namespace pb {
+
+namespace {
+
+using namespace internal::mujoco;
+
+// m: inactive contacts get gap = margin + this, i.e. they would need a
+// penetration of 1 km to become active
+constexpr double kInactiveGapM = 1e3;
+
+// an impact resolved by fewer steps than this is flagged in the mapping
+constexpr double kMinStepsPerImpact = 10.0;
+
+// MPR's depth against the exact geometry, over a run
+struct DepthCheck {
+  long samples = 0;
+  double max_abs_error_m = 0.0;
+  double max_penetration_m = 0.0;
+};
+
+// the reduced mass of two bodies (a fixed body has infinite mass), kg
+double reduced_mass_kg(const Body& a, const Body& b) {
+  const double wa = a.fixed ? 0.0 : 1.0 / a.mass_kg;
+  const double wb = b.fixed ? 0.0 : 1.0 / b.mass_kg;
+  return 1.0 / (wa + wb);
+}
+
+class MujocoEngine final : public Engine {
+ public:
+  MujocoEngine() : binder_(bind_mujoco_settings(settings_)) { install_warning_handler(); }
+
+  std::string name() const override { return "mujoco"; }
+  std::string version() const override {
+    return fmt::format("{} (mj_version {}, header {})", mj_versionString(), mj_version(),
+                       mjVERSION_HEADER);
+  }
+  Capability supports(const Case& c) const override {
+    return mujoco_capability(c, settings_.mode == "inject");
+  }
+  const SettingsBinder& settings() const override { return binder_; }
+
+  void build(const Case& c, const SettingsOverrides& overrides) override;
+  void advance_to(double t_s) override;
+  double time() const override { return static_cast<double>(steps_) * dt_s_; }
+  void body_states(std::vector<BodyState>& out) const override;
+  void contacts(std::vector<ContactSample>& out) const override;
+  std::vector<ContactEpisode> episodes() const override { return tracker_.episodes(); }
+  long steps() const override { return steps_; }
+  nlohmann::json mapping() const override;
+
+ private:
+  MjcfOptions base_options() const;
+  PairParams pair_params(std::size_t k, bool inactive) const;
+  Calibration calibration(std::size_t k, const FirstTouch& t) const;
+  void ensure_current();
+  void sample();
+  BodyState state_of(std::size_t body) const;
+  nlohmann::json describe_bodies() const;
+
+  MujocoSettings settings_;
+  SettingsBinder binder_;
+
+  Case case_;
+  double dt_s_ = 1e-4;
+  bool inject_ = false;
+  ModelPtr model_;
+  DataPtr data_;
+  ModelLayout layout_;
+  std::optional<Scratch> scratch_;
+  std::unique_ptr<ForceInjector> injector_;
+  WarningWatch watch_;
+  std::vector<PairObservation> obs_;  // at the current state
+  std::vector<Vec2> last_point_m_;    // per pair: last contact point seen
+  std::vector<Vec2> last_normal_;     // per pair: last normal seen (a -> b)
+  std::vector<bool> seen_;
+  std::vector<bool> check_depth_;  // per pair: MPR collider with an exact depth here
+  std::vector<DepthCheck> depth_;  // per pair
+  EpisodeTracker tracker_;
+  long steps_ = 0;
+  bool forward_current_ = false;  // mj_forward ran at the current state
+  bool sampled_ = false;          // the current state was sampled
+  nlohmann::json mapping_ = nlohmann::json::object();
+};
+
+MjcfOptions MujocoEngine::base_options() const {
+  MjcfOptions o;
+  o.dt_s = settings_.dt_s;
+  o.integrator = settings_.integrator;
+  o.solver = settings_.solver;
+  o.iterations = settings_.iterations;
+  o.tolerance = settings_.tolerance;
+  return o;
+}
+
+PairParams MujocoEngine::pair_params(std::size_t k, bool inactive) const {
+  const ContactPair& cp = case_.contacts[k];
+  const auto ga = geom_type(case_.bodies[static_cast<std::size_t>(cp.body_a)].shape);
+  const auto gb = geom_type(case_.bodies[static_cast<std::size_t>(cp.body_b)].shape);
+  PairParams p;
+  // a margin spoils MPR's depth: only exact colliders report ahead of touch
+  p.margin_m = collider(ga, gb) == Collider::exact ? settings_.detection_margin_m : 0.0;
+  // gap = margin: active below distance 0; inactive: never active
+  p.gap_m = inactive ? p.margin_m + kInactiveGapM : p.margin_m;
+  for (std::size_t i = 0; i < 5; ++i) p.solimp[i] = settings_.solimp[i];
+  return p;
+}
+
+Calibration MujocoEngine::calibration(std::size_t k, const FirstTouch& t) const {
+  const ContactPair& cp = case_.contacts[k];
+  Calibration cal;
+  if (t.found) {
+    cal.effective_mass_kg = t.effective_mass_kg;
+    cal.approach_speed_mps = t.approach_speed_mps;
+    cal.source = fmt::format(
+        "1/(J M^-1 J^T) from MuJoCo (mj_jac, mj_solveM) at the pair's first touch in a "
+        "contact-free probe run: t = {:.6f} s, point ({:.6f}, {:.6f}) m, normal ({:.6f}, {:.6f})",
+        t.time_s, t.point_m.x(), t.point_m.y(), t.normal_ab.x(), t.normal_ab.y());
+  } else {
+    cal.effective_mass_kg = reduced_mass_kg(case_.bodies[static_cast<std::size_t>(cp.body_a)],
+                                            case_.bodies[static_cast<std::size_t>(cp.body_b)]);
+    cal.approach_speed_mps = 0.0;
+    cal.source =
+        "the pair did not touch in the contact-free probe run: reduced mass of the two bodies "
+        "(a normal through both centres of mass assumed)";
+  }
+  return cal;
+}
+
+void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
+  binder_.apply(overrides);
+  validate_mujoco_settings(settings_, overrides);
+  inject_ = settings_.mode == "inject";
+  const Capability cap = mujoco_capability(c, inject_);
+  if (cap.support == Support::unsupported) {
+    throw EngineError("mujoco: cannot run case '" + c.name + "': " + cap.reason);
+  }
+  case_ = c;
+  dt_s_ = settings_.dt_s;
+  steps_ = 0;
+  tracker_ = EpisodeTracker{};
+  injector_.reset();
+  const std::size_t np = case_.contacts.size();
+
+  // every pair inactive: the inject model, and the probe of the native one
+  MjcfOptions options = base_options();
+  for (std::size_t k = 0; k < np; ++k) options.pairs.push_back(pair_params(k, true));
+  ModelPtr inactive = load_mjcf(write_mjcf(case_, options));
+  layout_ = model_layout(inactive.get(), case_);
+
+  nlohmann::json pairs = nlohmann::json::array();
+  nlohmann::json lost = nlohmann::json::array();
+  // where and how each pair first meets: calibrates native mode's solref and
+  // tells both modes how many steps an impact spans
+  const auto touch = probe_first_touch(inactive.get(), case_, layout_, case_.duration_s);
+  auto note_resolution = [&](std::size_t k, double force_duration_s, nlohmann::json& pair) {
+    const double steps = force_duration_s / dt_s_;
+    pair["steps_per_impact"] = steps;
+    if (steps < kMinStepsPerImpact) {
+      lost.push_back(fmt::format(
+          "pair '{}': one impact's force phase ({:.3g} s) spans only {:.3g} steps of {} s; "
+          "the impact is not resolved (use mujoco.dt <= {:.2g})",
+          case_.contacts[k].name, force_duration_s, steps, dt_s_,
+          force_duration_s / (2.0 * kMinStepsPerImpact)));
+    }
+  };
+  auto not_simulated = [&](std::size_t k) {
+    return nlohmann::json{{"law", contact_law_name(case_.contacts[k].law)},
+                          {"expressed_as", "nothing: both bodies are fixed"}};
+  };
+  if (inject_) {
+    model_ = std::move(inactive);
+    for (std::size_t k = 0; k < np; ++k) {
+      if (!layout_.pairs[k].present) {
+        pairs.push_back(not_simulated(k));
+        continue;
+      }
+      const Calibration cal = calibration(k, touch[k]);
+      // the law's own impact at the calibration (a linear law's duration
+      // does not depend on the speed: 1 m/s when the pair starts at rest)
+      const double v = cal.approach_speed_mps > 0.0 ? cal.approach_speed_mps : 1.0;
+      const CollisionResponse r =
+          simulate_collision(case_.contacts[k].law, cal.effective_mass_kg, v);
+      pairs.push_back({{"law", contact_law_name(case_.contacts[k].law)},
+                       {"expressed_as",
+                        "the case's own law (contact_force_n) applied by the adapter at the "
+                        "deepest MuJoCo contact of the pair"},
+                       {"effective_mass_kg", cal.effective_mass_kg},
+                       {"effective_mass_from", cal.source},
+                       {"law_force_duration_s", r.force_duration_s}});
+      note_resolution(k, r.force_duration_s, pairs.back());
+    }
+    lost.push_back(
+        "the force acts at MuJoCo's contact geometry (deepest contact of the pair, its "
+        "midpoint position, its normal); with Euler it is evaluated once per step at the "
+        "step's start state, with RK4 at every stage");
+    lost.push_back(
+        "Lankarani-Nikravesh's approach speed is the normal rate at the first step with "
+        "penetration > 0 (not at the interpolated onset)");
+  } else {
+    options.pairs.clear();
+    for (std::size_t k = 0; k < np; ++k) {
+      if (!layout_.pairs[k].present) {
+        options.pairs.push_back(pair_params(k, false));
+        pairs.push_back(not_simulated(k));
+        continue;
+      }
+      const LawMapping lm = map_contact_law(case_.contacts[k].law, calibration(k, touch[k]));
+      PairParams p = pair_params(k, false);
+      p.solref = lm.solref;
+      options.pairs.push_back(p);
+      pairs.push_back(lm.json);
+      note_resolution(k, lm.force_duration_s, pairs.back());
+    }
+    model_ = load_mjcf(write_mjcf(case_, options));
+    layout_ = model_layout(model_.get(), case_);
+    const double d = settings_.solimp[1];
+    lost.push_back(fmt::format(
+        "MuJoCo's soft contact with impedance d = {}: the constraint acceleration is "
+        "(1 - d) a0 - b v - k r (a0: acceleration without the contact), so inside a contact "
+        "the share d of gravity is removed from the contact's own dynamics: a resting contact "
+        "carries m g at a penetration (1 - d) m g / k (~0) instead of m g / k, and an impact "
+        "runs as the spring-damper without gravity (the clamp releases at k delta + c "
+        "delta_dot = -d m_eff a0.n instead of 0)",
+        d));
+    lost.push_back(
+        "the reported force is MuJoCo's constraint force: m_eff (k delta + c delta_dot) plus "
+        "the share d of the normal load of gravity");
+    lost.push_back(
+        "solref is per unit effective mass at one configuration (the first touch); where the "
+        "effective mass changes with pose or contact point the physical stiffness changes "
+        "with it");
+  }
+  for (std::size_t k = 0; k < np; ++k) {
+    const ContactPair& cp = case_.contacts[k];
+    const auto ga = geom_type(case_.bodies[static_cast<std::size_t>(cp.body_a)].shape);
+    const auto gb = geom_type(case_.bodies[static_cast<std::size_t>(cp.body_b)].shape);
+    const PairParams p = pair_params(k, inject_);
+    nlohmann::json& j = pairs[k];
+    j["name"] = cp.name;
+    j["body_a"] = case_.bodies[static_cast<std::size_t>(cp.body_a)].name;
+    j["body_b"] = case_.bodies[static_cast<std::size_t>(cp.body_b)].name;
+    j["collider"] = collider_description(ga, gb);
+    j["condim"] = 1;
+    j["margin_m"] = p.margin_m;
+    j["gap_m"] = p.gap_m;
+    if (!inject_) j["solimp"] = settings_.solimp;
+    if (collider(ga, gb) == Collider::mpr) {
+      lost.push_back(fmt::format(
+          "pair '{}': penetration from libccd MPR, depth error ~1e-6 m (measured 0.8-2.6e-6 m "
+          "for a sphere against an ellipsoid at 30-150 um penetration, mpr_tolerance 1e-6); "
+          "margin 0, so the onset is resolved to one step",
+          cp.name));
+    }
+  }
+
+  data_.reset(mj_makeData(model_.get()));
+  set_initial_state(model_.get(), data_.get(), case_, layout_);
+  watch_.reset(data_.get());
+  scratch_.emplace(model_.get());
+  if (inject_) injector_ = std::make_unique<ForceInjector>(case_, model_.get(), layout_);
+  obs_.clear();
+  last_point_m_.assign(np, Vec2::Zero());
+  last_normal_.assign(np, Vec2::Zero());
+  seen_.assign(np, false);
+  depth_.assign(np, DepthCheck{});
+  check_depth_.assign(np, false);
+  for (std::size_t k = 0; k < np; ++k) {
+    const ContactPair& cp = case_.contacts[k];
+    const Shape& sa = case_.bodies[static_cast<std::size_t>(cp.body_a)].shape;
+    const Shape& sb = case_.bodies[static_cast<std::size_t>(cp.body_b)].shape;
+    check_depth_[k] = collider(geom_type(sa), geom_type(sb)) == Collider::mpr &&
+                      exact_penetration_m(sa, BodyState{}, sb, BodyState{}).has_value();
+  }
+  forward_current_ = false;
+  sampled_ = false;
+
+  mapping_ = {
+      {"engine", "mujoco"},
+      {"version", version()},
+      {"mode", settings_.mode},
+      {"frame",
+       "case (x, y) -> MuJoCo (x, z); gravity along -z; the case angle theta (ccw) is the "
+       "hinge coordinate -theta about +y (a positive turn about +y is clockwise in the x-z "
+       "view)"},
+      {"stepping", fmt::format("{} at dt = {} s; mj_step split into mj_forward and "
+                               "mj_Euler/mj_RungeKutta (bit-identical) to sample each step's "
+                               "start state",
+                               settings_.integrator, settings_.dt_s)},
+      {"bodies", describe_bodies()},
+      {"pairs", pairs},
+      {"not_expressed", lost},
+  };
+
+  std::optional<ForceInjector::Scope> scope;
+  if (injector_) scope.emplace(*injector_);
+  ensure_current();
+}
+
+nlohmann::json MujocoEngine::describe_bodies() const {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t i = 0; i < case_.bodies.size(); ++i) {
+    const Body& b = case_.bodies[i];
+    const GeomType g = geom_type(b.shape);
+    nlohmann::json j = {
+        {"name", b.name}, {"shape", shape_type_name(b.shape)}, {"geom", geom_type_name(g)}};
+    if (const auto* e = std::get_if<Ellipse>(&b.shape)) {
+      const auto s = ellipsoid_size_m(*e);
+      j["ellipsoid_semi_axes_m"] = {s[0], s[1], s[2]};
+      j["note"] = "third (out-of-plane) semi-axis min(a, b); its section y = 0 is the ellipse";
+    } else if (std::holds_alternative<Polygon>(b.shape)) {
+      j["note"] =
+          "convex mesh: a bipyramid whose section y = 0 is the polygon; MuJoCo stores mesh "
+          "vertices in single precision (mjModel::mesh_vert is float): ~6e-8 relative";
+    } else if (std::holds_alternative<Circle>(b.shape)) {
+      j["note"] = "sphere: one contact point (a cylinder would give two)";
+    }
+    if (b.fixed) {
+      j["joints"] = "none: a geom of the world body";
+    } else {
+      j["joints"] = joint_of_body(case_, static_cast<int>(i)) >= 0
+                        ? "hinge about +y at the pivot"
+                        : "slide x, slide z, hinge about +y through the centre of mass";
+      j["inertial"] = fmt::format(
+          "explicit: mass {} kg, diaginertia ({}, {}, {}) kg m^2 (about y: the case's planar "
+          "inertia; x, z only need to be valid)",
+          b.mass_kg, b.inertia_kgm2, b.inertia_kgm2, b.inertia_kgm2);
+    }
+    out.push_back(j);
+  }
+  return out;
+}
+
+void MujocoEngine::ensure_current() {
+  mjModel* m = model_.get();
+  mjData* d = data_.get();
+  if (!forward_current_) {
+    forward_checked(m, d);
+    if (const char* w = watch_.new_warning(d)) {
+      throw EngineError(
+          fmt::format("mujoco: {} at t = {:.9g} s ({})", w, time(), last_warning_text()));
+    }
+    forward_current_ = true;
+  }
+  if (!sampled_) {
+    sample();
+    sampled_ = true;
+  }
+}
+
+void MujocoEngine::sample() {
+  const mjModel* m = model_.get();
+  const mjData* d = data_.get();
+  const double t = time();
+  observe_pairs(m, d, layout_, !inject_, *scratch_, obs_);
+  if (injector_) {
+    injector_->latch(obs_);
+    for (std::size_t k = 0; k < obs_.size(); ++k) obs_[k].force_n = injector_->force_n(k, obs_[k]);
+  }
+  for (std::size_t k = 0; k < obs_.size(); ++k) {
+    const PairLayout& p = layout_.pairs[k];
+    if (!p.present) continue;
+    const int a = case_.contacts[k].body_a;
+    const int b = case_.contacts[k].body_b;
+    const PairObservation& o = obs_[k];
+    if (o.reported && o.penetration_m > 0.0 && check_depth_[k]) {
+      const auto exact = exact_penetration_m(
+          case_.bodies[static_cast<std::size_t>(a)].shape, state_of(static_cast<std::size_t>(a)),
+          case_.bodies[static_cast<std::size_t>(b)].shape, state_of(static_cast<std::size_t>(b)));
+      DepthCheck& dc = depth_[k];
+      ++dc.samples;
+      dc.max_abs_error_m = std::max(dc.max_abs_error_m, std::abs(o.penetration_m - *exact));
+      dc.max_penetration_m = std::max(dc.max_penetration_m, *exact);
+    }
+    if (o.reported) {
+      tracker_.observe(t, a, b, o.penetration_m, o.approach_speed_mps, o.force_n);
+      last_point_m_[k] = o.point_m;
+      last_normal_[k] = o.normal_ab;
+      seen_[k] = true;
+    } else {
+      // not reported (beyond the margin): the speed along the last normal seen
+      // closes an open episode
+      double speed = 0.0;
+      if (seen_[k]) {
+        const auto p3 = to_mj(last_point_m_[k]);
+        const auto n3 = to_mj(last_normal_[k]);
+        speed = approach_speed_mps(m, d, p.mj_body_a, p.mj_body_b, p3.data(), n3.data(), *scratch_);
+      }
+      tracker_.observe_separated(t, a, b, speed);
+    }
+  }
+}
+
+void MujocoEngine::advance_to(double t_s) {
+  if (!model_) throw EngineError("mujoco: advance_to before build");
+  std::optional<ForceInjector::Scope> scope;
+  if (injector_) scope.emplace(*injector_);
+  while (static_cast<double>(steps_ + 1) * dt_s_ <= t_s + 1e-9 * dt_s_) {
+    ensure_current();
+    integrate(model_.get(), data_.get());
+    ++steps_;
+    forward_current_ = false;
+    sampled_ = false;
+  }
+  ensure_current();
+}
+
+BodyState MujocoEngine::state_of(std::size_t i) const {
+  const Body& b = case_.bodies[i];
+  BodyState s;
+  if (b.fixed || !model_) {
+    s.position_m = b.position_m;
+    s.angle_rad = b.angle_rad;
+    return s;
+  }
+  const mjData* d = data_.get();
+  const BodyLayout& l = layout_.bodies[i];
+  // centre of mass (inertial frame origin) and its velocity, world frame;
+  // the angle from the hinge coordinate, continuous (no wrapping)
+  s.position_m = from_mj(&d->xipos[3 * static_cast<std::size_t>(l.mj_body)]);
+  s.angle_rad = ccw_from_hinge(d->qpos[l.qpos_hinge]);
+  mjtNum v[6];  // (angular, linear) at the centre of mass
+  mj_objectVelocity(model_.get(), d, mjOBJ_BODY, l.mj_body, v, 0);
+  s.velocity_mps = from_mj(v + 3);
+  s.angular_velocity_radps = ccw_rate_from_mj(v);
+  return s;
+}
+
+void MujocoEngine::body_states(std::vector<BodyState>& out) const {
+  out.resize(case_.bodies.size());
+  for (std::size_t i = 0; i < case_.bodies.size(); ++i) out[i] = state_of(i);
+}
+
+nlohmann::json MujocoEngine::mapping() const {
+  nlohmann::json m = mapping_;
+  for (std::size_t k = 0; k < depth_.size() && m.contains("pairs"); ++k) {
+    if (!check_depth_[k]) continue;
+    m["pairs"][k]["mpr_depth_check"] = {
+        {"what",
+         "MuJoCo's (MPR) penetration against the exact circle-ellipse penetration, "
+         "over every step in contact of this run"},
+        {"samples", depth_[k].samples},
+        {"max_abs_error_m", depth_[k].max_abs_error_m},
+        {"max_exact_penetration_m", depth_[k].max_penetration_m}};
+  }
+  return m;
+}
+
+void MujocoEngine::contacts(std::vector<ContactSample>& out) const {
+  out.clear();
+  for (std::size_t k = 0; k < obs_.size(); ++k) {
+    const PairObservation& o = obs_[k];
+    if (!o.reported || !(o.penetration_m > 0.0)) continue;
+    ContactSample s;
+    s.body_a = case_.contacts[k].body_a;
+    s.body_b = case_.contacts[k].body_b;
+    s.force_n = o.force_n;
+    s.penetration_m = o.penetration_m;
+    s.normal = o.normal_ab;
+    s.point_m = o.point_m;
+    out.push_back(s);
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<Engine> make_mujoco_engine() {
+  return std::make_unique<MujocoEngine>();
+}
+
+}  // namespace pb

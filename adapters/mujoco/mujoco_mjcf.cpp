@@ -1,0 +1,195 @@
+#include "mujoco_mjcf.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <variant>
+
+#include "mujoco_frame.hpp"
+#include "mujoco_geometry.hpp"
+#include "planarbench/errors.hpp"
+
+namespace pb::internal::mujoco {
+
+namespace {
+
+// every number with round-trip precision
+std::string num(double x) {
+  return fmt::format("{:.17g}", x);
+}
+std::string vec3(const std::array<double, 3>& v) {
+  return fmt::format("{} {} {}", num(v[0]), num(v[1]), num(v[2]));
+}
+std::string quat(const std::array<double, 4>& q) {
+  return fmt::format("{} {} {} {}", num(q[0]), num(q[1]), num(q[2]), num(q[3]));
+}
+
+// rotation of a case vector by angle theta (counter-clockwise)
+Vec2 rotated(const Vec2& v, double theta) {
+  const double c = std::cos(theta);
+  const double s = std::sin(theta);
+  return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+}
+
+// the geom of body i, placed at `pos` with orientation `q` in its parent
+std::string geom_element(const Body& b, int i, const std::array<double, 3>& pos,
+                         const std::array<double, 4>& q) {
+  // collisions only through explicit <pair>s: contype = conaffinity = 0
+  const std::string common =
+      fmt::format(R"(name="{}" pos="{}" quat="{}" contype="0" conaffinity="0" condim="1")",
+                  geom_name(i), vec3(pos), quat(q));
+  return std::visit(
+      [&](const auto& s) -> std::string {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, Circle>) {
+          return fmt::format(R"(<geom {} type="sphere" size="{}"/>)", common, num(s.radius_m));
+        } else if constexpr (std::is_same_v<T, Ellipse>) {
+          return fmt::format(R"(<geom {} type="ellipsoid" size="{}"/>)", common,
+                             vec3(ellipsoid_size_m(s)));
+        } else if constexpr (std::is_same_v<T, Polygon>) {
+          return fmt::format(R"(<geom {} type="mesh" mesh="mesh{}"/>)", common, i);
+        } else {
+          // size only affects rendering: MuJoCo planes are infinite for collision
+          return fmt::format(R"(<geom {} type="plane" size="{} 1 1"/>)", common,
+                             num(0.5 * s.extent_m));
+        }
+      },
+      b.shape);
+}
+
+std::string mesh_asset(const Polygon& p, int i) {
+  std::string v;
+  for (const auto& x : bipyramid_vertices(p)) {
+    if (!v.empty()) v.append("  ");
+    v.append(vec3(x));
+  }
+  return fmt::format(R"(<mesh name="mesh{}" vertex="{}"/>)", i, v);
+}
+
+// explicit mass and planar inertia: the inertia about y is the case's; the two
+// other diagonal entries only need to be valid (triangle inequality), so all
+// three are equal
+std::string inertial_element(const Body& b, const std::array<double, 3>& pos) {
+  const std::string inertia = num(b.inertia_kgm2);
+  return fmt::format(R"(<inertial pos="{}" mass="{}" diaginertia="{} {} {}"/>)", vec3(pos),
+                     num(b.mass_kg), inertia, inertia, inertia);
+}
+
+std::string moving_body(const Case& c, int i) {
+  const Body& b = c.bodies[static_cast<std::size_t>(i)];
+  const int j = joint_of_body(c, i);
+  const std::array<double, 4> identity = {1.0, 0.0, 0.0, 0.0};
+  std::string s;
+  if (j < 0) {
+    // free planar body: its frame origin is the centre of mass at t = 0
+    s += fmt::format(R"(<body name="{}" pos="{}">)", body_name(i), vec3(to_mj(b.position_m)));
+    s += fmt::format(R"(<joint name="{}" type="slide" axis="1 0 0"/>)", slide_x_name(i));
+    s += fmt::format(R"(<joint name="{}" type="slide" axis="0 0 1"/>)", slide_z_name(i));
+    s += fmt::format(R"(<joint name="{}" type="hinge" axis="0 1 0"/>)", hinge_name(i));
+    s += inertial_element(b, {0.0, 0.0, 0.0});
+    s += geom_element(b, i, {0.0, 0.0, 0.0}, identity);
+  } else {
+    // pendulum: frame origin at the pivot; centre of mass at -pivot_in_body
+    // in the reference pose (angle 0)
+    const RevoluteJoint& rj = c.joints[static_cast<std::size_t>(j)];
+    const auto com = to_mj(-pivot_in_body_m(c, rj));
+    s += fmt::format(R"(<body name="{}" pos="{}">)", body_name(i), vec3(to_mj(rj.anchor_world_m)));
+    s += fmt::format(R"(<joint name="{}" type="hinge" axis="0 1 0"/>)", hinge_name(i));
+    s += inertial_element(b, com);
+    s += geom_element(b, i, com, identity);
+  }
+  s += "</body>\n";
+  return s;
+}
+
+std::string reals(const double* v, std::size_t n) {
+  std::string s;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k) s.append(" ");
+    s.append(num(v[k]));
+  }
+  return s;
+}
+
+}  // namespace
+
+std::string body_name(int i) {
+  return fmt::format("body{}", i);
+}
+std::string geom_name(int i) {
+  return fmt::format("geom{}", i);
+}
+std::string slide_x_name(int i) {
+  return fmt::format("body{}_x", i);
+}
+std::string slide_z_name(int i) {
+  return fmt::format("body{}_z", i);
+}
+std::string hinge_name(int i) {
+  return fmt::format("body{}_hinge", i);
+}
+
+int joint_of_body(const Case& c, int body) {
+  for (std::size_t k = 0; k < c.joints.size(); ++k) {
+    if (c.joints[k].body == body) return static_cast<int>(k);
+  }
+  return -1;
+}
+
+Vec2 pivot_in_body_m(const Case& c, const RevoluteJoint& j) {
+  const Body& b = c.bodies.at(static_cast<std::size_t>(j.body));
+  return rotated(j.anchor_world_m - b.position_m, -b.angle_rad);
+}
+
+std::string write_mjcf(const Case& c, const MjcfOptions& o) {
+  if (o.pairs.size() != c.contacts.size()) {
+    throw EngineError("mujoco: write_mjcf needs one PairParams per contact pair");
+  }
+  std::string assets;
+  std::string world;
+  for (std::size_t i = 0; i < c.bodies.size(); ++i) {
+    const Body& b = c.bodies[i];
+    const int id = static_cast<int>(i);
+    if (const auto* p = std::get_if<Polygon>(&b.shape)) assets += mesh_asset(*p, id) + "\n";
+    if (b.fixed) {
+      // fixed bodies are geoms of the world body at their pose
+      world += geom_element(b, id, to_mj(b.position_m), quat_from_ccw(b.angle_rad)) + "\n";
+    } else {
+      if (std::holds_alternative<HalfPlane>(b.shape)) {
+        throw EngineError(fmt::format("mujoco: half-plane '{}' must be fixed", b.name));
+      }
+      world += moving_body(c, id);
+    }
+  }
+  std::string pairs;
+  for (std::size_t k = 0; k < c.contacts.size(); ++k) {
+    const ContactPair& cp = c.contacts[k];
+    const auto& a = c.bodies.at(static_cast<std::size_t>(cp.body_a));
+    const auto& b = c.bodies.at(static_cast<std::size_t>(cp.body_b));
+    // two fixed bodies never move: MuJoCo has nothing to compute
+    if (a.fixed && b.fixed) continue;
+    const PairParams& p = o.pairs[k];
+    pairs += fmt::format(
+        R"(<pair name="pair{}" geom1="{}" geom2="{}" condim="1" solref="{}" solimp="{}" margin="{}" gap="{}"/>)",
+        k, geom_name(cp.body_a), geom_name(cp.body_b), reals(p.solref.data(), 2),
+        reals(p.solimp.data(), 5), num(p.margin_m), num(p.gap_m));
+    pairs += "\n";
+  }
+  const auto g = to_mj(c.gravity_mps2);
+  return fmt::format(
+      R"(<mujoco model="{}">
+<compiler angle="radian" inertiafromgeom="false"/>
+<option timestep="{}" integrator="{}" solver="{}" iterations="{}" tolerance="{}" gravity="{}"/>
+<asset>
+{}</asset>
+<worldbody>
+{}</worldbody>
+<contact>
+{}</contact>
+</mujoco>
+)",
+      "planarbench", num(o.dt_s), o.integrator, o.solver, o.iterations, num(o.tolerance), vec3(g),
+      assets, world, pairs);
+}
+
+}  // namespace pb::internal::mujoco

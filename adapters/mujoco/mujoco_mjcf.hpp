@@ -1,0 +1,55 @@
+// MJCF text of a case: one MuJoCo body per moving case body, one geom per
+// body, one explicit <pair> per case contact pair, everything else unable to
+// collide. Built from the pb::Case alone: no code path per case.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "planarbench/case.hpp"
+
+namespace pb::internal::mujoco {
+
+// MuJoCo parameters of one case contact pair
+struct PairParams {
+  std::array<double, 2> solref = {0.02, 1.0};  // MuJoCo's default; direct form (-k, -b) when < 0
+  std::array<double, 5> solimp = {0.9, 0.95, 0.001, 0.5, 2.0};
+  double margin_m = 0.0;  // m, distance below which MuJoCo reports the pair
+  double gap_m = 0.0;     // m, contacts with distance >= margin - gap are inactive
+};
+
+struct MjcfOptions {
+  double dt_s = 1e-4;
+  std::string integrator = "Euler";
+  std::string solver = "Newton";
+  int iterations = 100;
+  double tolerance = 1e-8;
+  std::vector<PairParams> pairs;  // index = Case::contacts index
+};
+
+// names of the MuJoCo elements of case body i and pair k
+[[nodiscard]] std::string body_name(int i);
+[[nodiscard]] std::string geom_name(int i);
+[[nodiscard]] std::string slide_x_name(int i);
+[[nodiscard]] std::string slide_z_name(int i);
+[[nodiscard]] std::string hinge_name(int i);
+
+// The joint set of a moving body: a free body gets slide x, slide z, hinge y
+// (in this order, so that the slides move along world axes and the hinge
+// turns about the centre of mass); a body with a revolute joint to ground gets
+// one hinge about y at its pivot. Index of the case joint of body i, or -1.
+[[nodiscard]] int joint_of_body(const Case& c, int body);
+
+// The pivot in the body frame, derived from the case at t = 0 (the case's
+// anchor_world and the body's pose): R(-theta0) (anchor_world - position).
+[[nodiscard]] Vec2 pivot_in_body_m(const Case& c, const RevoluteJoint& j);
+
+// The MJCF text. Every moving body is placed in its reference pose (angle 0;
+// a free body at its initial position, a pendulum body at its pivot); the
+// initial angle and velocities are set on qpos/qvel after loading
+// (initial_state below), so that joint coordinates start at known values.
+// Throws EngineError for shapes or joints MuJoCo cannot take (see supports()).
+[[nodiscard]] std::string write_mjcf(const Case& c, const MjcfOptions& options);
+
+}  // namespace pb::internal::mujoco

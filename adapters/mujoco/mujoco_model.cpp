@@ -1,0 +1,108 @@
+#include "mujoco_model.hpp"
+
+#include <fmt/format.h>
+
+#include <cstring>
+#include <mutex>
+
+#include "mujoco_frame.hpp"
+#include "mujoco_mjcf.hpp"
+#include "planarbench/errors.hpp"
+
+namespace pb::internal::mujoco {
+
+namespace {
+
+std::mutex& load_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+int id_of(const mjModel* m, int type, const std::string& name) {
+  return mj_name2id(m, type, name.c_str());
+}
+
+}  // namespace
+
+ModelPtr load_mjcf(const std::string& xml) {
+  constexpr const char* kFile = "planarbench.xml";
+  // mjVFS holds 2000 file names of 1000 chars: too large for a stack
+  auto vfs = std::make_unique<mjVFS>();
+  mj_defaultVFS(vfs.get());
+  if (mj_makeEmptyFileVFS(vfs.get(), kFile, static_cast<int>(xml.size())) != 0) {
+    throw EngineError("mujoco: mj_makeEmptyFileVFS failed");
+  }
+  const int index = mj_findFileVFS(vfs.get(), kFile);
+  std::memcpy(vfs->filedata[index], xml.data(), xml.size());
+  char error[1024] = "";
+  mjModel* m = nullptr;
+  {
+    std::lock_guard<std::mutex> lock(load_mutex());
+    m = mj_loadXML(kFile, vfs.get(), error, sizeof(error));
+  }
+  mj_deleteVFS(vfs.get());
+  if (!m) throw EngineError(fmt::format("mujoco: mj_loadXML failed: {}", error));
+  return ModelPtr(m);
+}
+
+int ModelLayout::pair_of(int geom1, int geom2) const {
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const PairLayout& p = pairs[k];
+    if ((p.geom_a == geom1 && p.geom_b == geom2) || (p.geom_a == geom2 && p.geom_b == geom1)) {
+      return static_cast<int>(k);
+    }
+  }
+  return -1;
+}
+
+ModelLayout model_layout(const mjModel* m, const Case& c) {
+  ModelLayout L;
+  for (std::size_t i = 0; i < c.bodies.size(); ++i) {
+    const int id = static_cast<int>(i);
+    BodyLayout b;
+    b.geom = id_of(m, mjOBJ_GEOM, geom_name(id));
+    if (!c.bodies[i].fixed) {
+      b.mj_body = id_of(m, mjOBJ_BODY, body_name(id));
+      const int jx = id_of(m, mjOBJ_JOINT, slide_x_name(id));
+      const int jz = id_of(m, mjOBJ_JOINT, slide_z_name(id));
+      const int jh = id_of(m, mjOBJ_JOINT, hinge_name(id));
+      if (jx >= 0) b.qpos_x = m->jnt_qposadr[jx], b.dof_x = m->jnt_dofadr[jx];
+      if (jz >= 0) b.qpos_z = m->jnt_qposadr[jz], b.dof_z = m->jnt_dofadr[jz];
+      if (jh >= 0) b.qpos_hinge = m->jnt_qposadr[jh], b.dof_hinge = m->jnt_dofadr[jh];
+    }
+    L.bodies.push_back(b);
+  }
+  for (const ContactPair& cp : c.contacts) {
+    PairLayout p;
+    const BodyLayout& a = L.bodies.at(static_cast<std::size_t>(cp.body_a));
+    const BodyLayout& b = L.bodies.at(static_cast<std::size_t>(cp.body_b));
+    p.geom_a = a.geom;
+    p.geom_b = b.geom;
+    p.mj_body_a = a.mj_body;
+    p.mj_body_b = b.mj_body;
+    p.present = !(c.bodies[static_cast<std::size_t>(cp.body_a)].fixed &&
+                  c.bodies[static_cast<std::size_t>(cp.body_b)].fixed);
+    L.pairs.push_back(p);
+  }
+  return L;
+}
+
+void set_initial_state(const mjModel* m, mjData* d, const Case& c, const ModelLayout& L) {
+  mj_resetData(m, d);
+  for (std::size_t i = 0; i < c.bodies.size(); ++i) {
+    const Body& b = c.bodies[i];
+    const BodyLayout& l = L.bodies[i];
+    if (b.fixed) continue;
+    // the reference pose is angle 0: the initial angle lives in the hinge
+    d->qpos[l.qpos_hinge] = hinge_from_ccw(b.angle_rad);
+    d->qvel[l.dof_hinge] = hinge_rate_from_ccw(b.angular_velocity_radps);
+    if (l.qpos_x >= 0) {
+      d->qpos[l.qpos_x] = 0.0;
+      d->qpos[l.qpos_z] = 0.0;
+      d->qvel[l.dof_x] = b.velocity_mps.x();
+      d->qvel[l.dof_z] = b.velocity_mps.y();
+    }
+  }
+}
+
+}  // namespace pb::internal::mujoco

@@ -1,0 +1,100 @@
+#include "mujoco_pair_state.hpp"
+
+#include <cmath>
+
+#include "mujoco_frame.hpp"
+
+namespace pb::internal::mujoco {
+
+namespace {
+
+// v = J qvel of a point of a body, m/s (MuJoCo frame); zero for the world
+void point_velocity(const mjModel* m, const mjData* d, int body, const double p[3],
+                    std::vector<double>& jac, double v[3]) {
+  v[0] = v[1] = v[2] = 0.0;
+  if (body <= 0) return;
+  mj_jac(m, d, jac.data(), nullptr, p, body);
+  const auto nv = static_cast<std::size_t>(m->nv);
+  for (std::size_t r = 0; r < 3; ++r) {
+    for (std::size_t k = 0; k < nv; ++k) v[r] += jac[r * nv + k] * d->qvel[k];
+  }
+}
+
+}  // namespace
+
+Scratch::Scratch(const mjModel* m)
+    : jac_a(static_cast<std::size_t>(3 * m->nv)),
+      jac_b(static_cast<std::size_t>(3 * m->nv)),
+      row(static_cast<std::size_t>(m->nv)),
+      minv_row(static_cast<std::size_t>(m->nv)) {}
+
+double approach_speed_mps(const mjModel* m, const mjData* d, int body_a, int body_b,
+                          const double p[3], const double n[3], Scratch& s) {
+  double va[3];
+  double vb[3];
+  point_velocity(m, d, body_a, p, s.jac_a, va);
+  point_velocity(m, d, body_b, p, s.jac_b, vb);
+  return (va[0] - vb[0]) * n[0] + (va[1] - vb[1]) * n[1] + (va[2] - vb[2]) * n[2];
+}
+
+double effective_mass_kg(const mjModel* m, mjData* d, int body_a, int body_b, const double p[3],
+                         const double n[3], Scratch& s) {
+  const int nv = m->nv;
+  std::fill(s.jac_a.begin(), s.jac_a.end(), 0.0);
+  std::fill(s.jac_b.begin(), s.jac_b.end(), 0.0);
+  if (body_a > 0) mj_jac(m, d, s.jac_a.data(), nullptr, p, body_a);
+  if (body_b > 0) mj_jac(m, d, s.jac_b.data(), nullptr, p, body_b);
+  for (int k = 0; k < nv; ++k) {
+    double r = 0.0;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::size_t at = i * static_cast<std::size_t>(nv) + static_cast<std::size_t>(k);
+      r += n[i] * (s.jac_b[at] - s.jac_a[at]);
+    }
+    s.row[static_cast<std::size_t>(k)] = r;
+  }
+  mj_solveM(m, d, s.minv_row.data(), s.row.data(), 1);
+  double w = 0.0;  // inverse effective mass, 1/kg
+  for (int k = 0; k < nv; ++k) {
+    w += s.row[static_cast<std::size_t>(k)] * s.minv_row[static_cast<std::size_t>(k)];
+  }
+  return 1.0 / w;
+}
+
+void observe_pairs(const mjModel* m, const mjData* d, const ModelLayout& layout, bool with_force,
+                   Scratch& scratch, std::vector<PairObservation>& out) {
+  out.assign(layout.pairs.size(), PairObservation{});
+  for (int i = 0; i < d->ncon; ++i) {
+    const mjContact& con = d->contact[i];
+    const int k = layout.pair_of(con.geom1, con.geom2);
+    if (k < 0) continue;
+    PairObservation& o = out[static_cast<std::size_t>(k)];
+    ++o.contacts;
+    if (with_force && con.efc_address >= 0) {
+      mjtNum f[6];
+      mj_contactForce(m, d, i, f);
+      o.force_n += f[0];  // contact frame: f[0] is the normal force, >= 0
+    }
+    if (o.reported && -con.dist <= o.penetration_m) continue;
+    o.reported = true;
+    o.deepest = i;
+    o.penetration_m = -con.dist;
+  }
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    PairObservation& o = out[k];
+    if (!o.reported) continue;
+    const PairLayout& p = layout.pairs[k];
+    const mjContact& con = d->contact[o.deepest];
+    // frame[0..2] is the normal from geom1 to geom2; the case wants a -> b.
+    // The out-of-plane component (MPR noise, ~1e-8) is dropped.
+    const double sign = con.geom1 == p.geom_a ? 1.0 : -1.0;
+    Vec2 n = sign * from_mj(con.frame);
+    n.normalize();
+    o.normal_ab = n;
+    o.point_m = from_mj(con.pos);
+    const auto n3 = to_mj(n);
+    o.approach_speed_mps =
+        approach_speed_mps(m, d, p.mj_body_a, p.mj_body_b, con.pos, n3.data(), scratch);
+  }
+}
+
+}  // namespace pb::internal::mujoco

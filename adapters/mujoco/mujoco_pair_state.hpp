@@ -1,0 +1,51 @@
+// What a case contact pair looks like in MuJoCo's current data: the deepest
+// of its contacts (distance, normal, point), the approach speed there and
+// MuJoCo's normal force; and the effective mass along a contact normal.
+#pragma once
+
+#include <mujoco/mujoco.h>
+
+#include <vector>
+
+#include "mujoco_model.hpp"
+#include "planarbench/case.hpp"
+
+namespace pb::internal::mujoco {
+
+// buffers sized for one model, allocated once (the sampling loop allocates nothing)
+struct Scratch {
+  explicit Scratch(const mjModel* m);
+  std::vector<double> jac_a;     // 3 x nv, translational Jacobian of body a's point
+  std::vector<double> jac_b;     // 3 x nv
+  std::vector<double> row;       // nv, normal Jacobian n^T (J_b - J_a)
+  std::vector<double> minv_row;  // nv, M^-1 row^T
+};
+
+struct PairObservation {
+  bool reported = false;            // MuJoCo's collider gave at least one contact
+  int deepest = -1;                 // index of the deepest contact in mjData::contact
+  double penetration_m = 0.0;       // m, -dist of the deepest contact (< 0: apart, within margin)
+  Vec2 normal_ab = Vec2::Zero();    // unit, case frame, from body_a to body_b
+  Vec2 point_m = Vec2::Zero();      // m, case frame, MuJoCo's contact position (midpoint)
+  double approach_speed_mps = 0.0;  // m/s, (v_a - v_b) . n_ab at the point, > 0 approaching
+  double force_n = 0.0;  // N, MuJoCo's normal force summed over the pair's active contacts
+  int contacts = 0;      // contacts MuJoCo reported for the pair
+};
+
+// Reads d->contact (valid after mj_collision at the current qpos) and d->qvel.
+// Forces (mj_contactForce, needs the constraint solve) only when with_force.
+void observe_pairs(const mjModel* m, const mjData* d, const ModelLayout& layout, bool with_force,
+                   Scratch& scratch, std::vector<PairObservation>& out);
+
+// (v_a - v_b) . n at world point p (MuJoCo frame), from the bodies'
+// translational Jacobians (position stage) and qvel; world body 0 is at rest
+[[nodiscard]] double approach_speed_mps(const mjModel* m, const mjData* d, int mj_body_a,
+                                        int mj_body_b, const double p[3], const double n[3],
+                                        Scratch& scratch);
+
+// m_eff = 1 / (J M^-1 J^T) along n at p, J = n^T (J_b(p) - J_a(p)) (ENGINES.md:
+// what a direct solref is per unit of); needs qLD (mj_factorM, position stage)
+[[nodiscard]] double effective_mass_kg(const mjModel* m, mjData* d, int mj_body_a, int mj_body_b,
+                                       const double p[3], const double n[3], Scratch& scratch);
+
+}  // namespace pb::internal::mujoco

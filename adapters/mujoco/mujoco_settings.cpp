@@ -1,0 +1,56 @@
+#include "mujoco_settings.hpp"
+
+#include <fmt/format.h>
+
+#include "planarbench/errors.hpp"
+
+namespace pb::internal::mujoco {
+
+SettingsBinder bind_mujoco_settings(MujocoSettings& s) {
+  SettingsBinder b("mujoco");
+  b.real("dt", &s.dt_s, 1e-7, 1e-2,
+         "time step (mjOption::timestep), s, in [1e-7, 1e-2] (default 1e-4)")
+      .choice(
+          "integrator", &s.integrator, {"Euler", "RK4"},
+          "Euler = MuJoCo's default semi-implicit Euler (default), RK4 = its 4th-order Runge-Kutta")
+      .choice("solver", &s.solver, {"Newton", "CG", "PGS"},
+              "constraint solver (default Newton, MuJoCo's default)")
+      .integer("iterations", &s.iterations, 1, 100000,
+               "constraint solver iterations (default 100, MuJoCo's default)")
+      .real("tolerance", &s.tolerance, 0.0, 1.0,
+            "constraint solver tolerance, in [0, 1] (default 1e-8, MuJoCo's default)")
+      .reals("solimp", &s.solimp, 5,
+             "contact impedance (dmin, dmax, width m, midpoint, power); d in [0.0001, 0.9999] "
+             "(default [0.9999, 0.9999, 0.001, 0.5, 2]: near the clamp, the spring-damper is "
+             "followed and gravity's share of a resting load is scaled by 1 - d)")
+      .real("detection_margin", &s.detection_margin_m, 0.0, 1.0,
+            "m, margin of exact-collider pairs, reported as inactive contacts for onset "
+            "interpolation; changes no force (default 0.01; MPR pairs always use 0)")
+      .choice("mode", &s.mode, {"native", "inject"},
+              "native = MuJoCo soft contact with the law mapped to solref (default), inject = "
+              "contacts inactive and the case's force law applied at MuJoCo's contact geometry");
+  return b;
+}
+
+void validate_mujoco_settings(const MujocoSettings& s, const SettingsOverrides& given) {
+  const auto& p = s.solimp;
+  // the prefixed key wins over the shared one (settings.hpp)
+  const SettingValue* v = given.find("mujoco.solimp");
+  const std::string key = v ? "mujoco.solimp" : "solimp";
+  if (!v) v = given.find("solimp");
+  auto bad = [&](const std::string& what) {
+    throw InputError(v ? v->source.origin : "defaults", v ? v->source.line : 0, key, what);
+  };
+  if (p.size() != 5) bad("must be 5 numbers (dmin, dmax, width, midpoint, power)");
+  // MuJoCo clamps d to [mjMINIMP, mjMAXIMP] = [0.0001, 0.9999] (mjmodel.h)
+  for (int i : {0, 1, 3}) {
+    if (p[static_cast<std::size_t>(i)] < 0.0001 || p[static_cast<std::size_t>(i)] > 0.9999) {
+      bad(fmt::format("entry {} must be in [0.0001, 0.9999] (got {:g})", i,
+                      p[static_cast<std::size_t>(i)]));
+    }
+  }
+  if (!(p[2] >= 0.0)) bad(fmt::format("width must be >= 0 (got {:g})", p[2]));
+  if (!(p[4] >= 1.0)) bad(fmt::format("power must be >= 1 (got {:g})", p[4]));
+}
+
+}  // namespace pb::internal::mujoco

@@ -1,0 +1,48 @@
+// Settings of the MuJoCo adapter (engine "mujoco"): a plain struct with stated
+// defaults, bound to the keys of `--set mujoco.KEY=VALUE` (shared key: "dt").
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "planarbench/settings.hpp"
+
+namespace pb::internal::mujoco {
+
+struct MujocoSettings {
+  // s, mjOption::timestep; "dt" is shared with the other fixed-step engines
+  double dt_s = 1e-4;
+  // "Euler" (MuJoCo's default, semi-implicit: velocity first, then position
+  // with the new velocity; what MuJoCo's users run) or "RK4"
+  std::string integrator = "Euler";
+  // "Newton" (MuJoCo's default), "CG" or "PGS"
+  std::string solver = "Newton";
+  // mjOption::iterations and ::tolerance (MuJoCo's defaults 100 and 1e-8)
+  int iterations = 100;
+  double tolerance = 1e-8;
+  // solimp (dmin, dmax, width m, midpoint, power): impedance d near its clamp
+  // 0.9999 makes the constraint follow the reference acceleration -b v - k r,
+  // i.e. the spring-damper (ENGINES.md)
+  std::vector<double> solimp = {0.9999, 0.9999, 0.001, 0.5, 2.0};
+  // m, contact margin of pairs whose collider is exact (plane-sphere,
+  // plane-ellipsoid, plane-mesh, sphere-sphere): MuJoCo reports the pair while
+  // its distance is below this, as inactive (gap = margin) contacts, so that
+  // onsets are interpolated; it changes no force. Pairs through libccd MPR
+  // always get margin 0: a margin spoils MPR's depth (measured: 0.4 mm error
+  // at 0.01 m margin against 1e-6 m at 0).
+  double detection_margin_m = 0.01;
+  // "native": MuJoCo's own soft contact with the case's law mapped onto
+  // solref; "inject": MuJoCo's contacts kept inactive, the case's own law
+  // applied as a force at MuJoCo's contact geometry (mjcb_passive)
+  std::string mode = "native";
+};
+
+// Binds every member of `s` under engine name "mujoco"; the binder keeps
+// pointers into `s`, which must outlive it.
+[[nodiscard]] SettingsBinder bind_mujoco_settings(MujocoSettings& s);
+
+// Checks what the binder cannot (the solimp ranges of MuJoCo's documentation);
+// throws InputError naming the key and where its value came from.
+void validate_mujoco_settings(const MujocoSettings& s, const SettingsOverrides& given);
+
+}  // namespace pb::internal::mujoco

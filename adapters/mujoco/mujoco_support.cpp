@@ -1,0 +1,90 @@
+#include "mujoco_support.hpp"
+
+#include <fmt/format.h>
+
+#include <variant>
+
+#include "mujoco_geometry.hpp"
+#include "mujoco_mjcf.hpp"
+
+namespace pb::internal::mujoco {
+
+namespace {
+
+// the first reason MuJoCo cannot build the case, or empty
+std::string unsupported_reason(const Case& c) {
+  for (std::size_t i = 0; i < c.bodies.size(); ++i) {
+    const Body& b = c.bodies[i];
+    if (!b.fixed && std::holds_alternative<HalfPlane>(b.shape)) {
+      return fmt::format("body '{}': a moving half-plane (MuJoCo planes must be static)", b.name);
+    }
+    if (const auto* p = std::get_if<Polygon>(&b.shape); p && !is_convex(*p)) {
+      return fmt::format(
+          "body '{}': a non-convex polygon (MuJoCo collides a mesh as its convex hull; a "
+          "decomposition into convex pieces would add one contact spring per piece)",
+          b.name);
+    }
+    if (!b.fixed && !(b.mass_kg > 0.0 && b.inertia_kgm2 > 0.0)) {
+      return fmt::format("body '{}': a moving body needs mass > 0 and inertia > 0", b.name);
+    }
+  }
+  for (std::size_t k = 0; k < c.joints.size(); ++k) {
+    const RevoluteJoint& j = c.joints[k];
+    if (j.body < 0 || j.body >= static_cast<int>(c.bodies.size())) {
+      return fmt::format("joint '{}': no such body", j.name);
+    }
+    if (c.bodies[static_cast<std::size_t>(j.body)].fixed) {
+      return fmt::format("joint '{}': joined to a fixed body", j.name);
+    }
+    if (joint_of_body(c, j.body) != static_cast<int>(k)) {
+      return fmt::format("joint '{}': a second revolute joint on body '{}' (it would be fixed)",
+                         j.name, c.bodies[static_cast<std::size_t>(j.body)].name);
+    }
+  }
+  const int n = static_cast<int>(c.bodies.size());
+  for (const ContactPair& cp : c.contacts) {
+    if (cp.body_a < 0 || cp.body_a >= n || cp.body_b < 0 || cp.body_b >= n ||
+        cp.body_a == cp.body_b) {
+      return fmt::format("contact pair '{}': bodies must be two distinct bodies", cp.name);
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+Capability mujoco_capability(const Case& c, bool inject) {
+  if (auto r = unsupported_reason(c); !r.empty()) return {Support::unsupported, r};
+  std::string reasons;
+  auto add = [&](const std::string& r) {
+    if (reasons.find(r) != std::string::npos) return;
+    if (!reasons.empty()) reasons.append("; ");
+    reasons.append(r);
+  };
+  for (const ContactPair& cp : c.contacts) {
+    const auto& a = c.bodies[static_cast<std::size_t>(cp.body_a)];
+    const auto& b = c.bodies[static_cast<std::size_t>(cp.body_b)];
+    if (a.fixed && b.fixed) continue;
+    const GeomType ga = geom_type(a.shape);
+    const GeomType gb = geom_type(b.shape);
+    if (collider(ga, gb) == Collider::mpr) {
+      add(fmt::format("{} penetration from libccd MPR (approximate depth)",
+                      collider_description(ga, gb)));
+    }
+    if (inject) continue;
+    if (const auto* kv = std::get_if<KelvinVoigt>(&cp.law)) {
+      add("Kelvin-Voigt as a soft constraint near d = 1: gravity's share of the contact load "
+          "is scaled by 1 - d (resting penetration ~0 instead of m g / k)");
+      if (kv->damping_depth_m > 0.0) add("damping ramp replaced by a linear equivalent");
+    } else {
+      add(
+          fmt::format("{} replaced by a linear spring-damper matching one impact's duration "
+                      "and restitution",
+                      contact_law_name(cp.law)));
+    }
+  }
+  if (reasons.empty()) return {Support::native, ""};
+  return {Support::mapped, reasons};
+}
+
+}  // namespace pb::internal::mujoco

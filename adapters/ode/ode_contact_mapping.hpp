@@ -1,0 +1,87 @@
+// How a case's contact law becomes an ODE soft contact (pure arithmetic, no
+// ODE calls): the linear spring-damper a law is expressed as, its ERP/CFM at
+// a step, the effective mass along a contact normal, and the auto step.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "planarbench/case.hpp"
+#include "planarbench/contact_law_response.hpp"
+
+namespace pb::internal::ode {
+
+// ---- ERP/CFM of a linear spring-damper -----------------------------------
+
+// ODE manual, "Soft constraint and constraint force mixing": a contact with
+//   ERP = h k / (h k + c'),  CFM = 1 / (h k + c')
+// solves J v' = (ERP/h) depth - CFM lambda, i.e. lambda = k (depth - h u) + c' (-u)
+// with u = J v' the separation speed at the end of the step: the spring acts
+// on the end-of-step penetration (backward Euler), which damps like an extra
+// h k. The textbook choice c' = c therefore behaves like c + h k; the corrected
+// choice c' = c - h k gives lambda = k depth + c (-u), spring at the start of
+// the step and damper at its end, which keeps the intended damping. c' must
+// stay >= 0 (ERP <= 1): with c < h k the correction is clamped at c' = 0 and
+// the contact still damps like h k instead of c.
+struct SoftContact {
+  double erp = 0.0;                         // -
+  double cfm = 0.0;                         // m/(N s)
+  double damping_used_ns_per_m = 0.0;       // c' fed to the formulas, N s/m
+  double numerical_damping_ns_per_m = 0.0;  // h k, N s/m
+  bool corrected = false;                   // the corrected mapping was asked for
+  bool correction_valid = true;             // c >= h k (always true for textbook)
+  std::string note;                         // what was done and why
+};
+[[nodiscard]] SoftContact soft_contact(double stiffness_n_per_m, double damping_ns_per_m,
+                                       double step_s, bool corrected);
+
+// ---- a law as a linear spring-damper ---------------------------------------
+
+struct LinearLaw {
+  double stiffness_n_per_m = 0.0;     // N/m
+  double damping_ns_per_m = 0.0;      // N s/m
+  bool exact = false;                 // the law is this spring-damper (plain Kelvin-Voigt)
+  CollisionResponse law_response;     // the case's law in one collision (m_eff, v)
+  CollisionResponse linear_response;  // the linear law in the same collision
+  double mass_kg = 0.0;               // m_eff used
+  double approach_speed_mps = 0.0;    // v used
+  std::string how;                    // how the equivalent was found
+};
+
+// Plain Kelvin-Voigt is itself (exact). Any other law (Lankarani-Nikravesh,
+// Hertz, Kelvin-Voigt with a damping ramp) becomes the spring-damper whose
+// clamped collision has the same force duration and restitution as the law's
+// own collision of mass m_eff at approach speed v (simulate_collision, then
+// linear_equivalent). A purely elastic law (restitution 1) gets
+// k = m (pi / T)^2, c = 0. v <= 0 (a contact that starts at rest) uses a
+// nominal 1 m/s, stated in `how`.
+[[nodiscard]] LinearLaw linear_law(const ContactLaw& law, double mass_kg,
+                                   double approach_speed_mps);
+
+// ---- effective mass ---------------------------------------------------------
+
+// 1 / (J M^-1 J^T) along `normal` at `point` for the pair's two bodies, where
+// J maps the bodies' velocities to the relative normal velocity. Per body:
+// fixed -> 0; free -> 1/m + (r x n)^2 / I (r from the centre); one revolute
+// joint to ground -> (r_p x n)^2 / I_p with r_p from the pivot and
+// I_p = I + m |centre - pivot|^2 (parallel-axis theorem); two or more
+// revolute joints -> 0 (immobile). centres_m: the bodies' current centres
+// (index = Case::bodies index). Infinity when neither body can move.
+[[nodiscard]] double effective_mass_kg(const Case& c, const ContactPair& pair,
+                                       const std::vector<Vec2>& centres_m, const Vec2& point_m,
+                                       const Vec2& normal);
+
+// ---- step -------------------------------------------------------------------
+
+// Steps per dt: the smallest n >= 1 such that h = dt / n resolves every pair's
+// force phase with at least contact_steps steps and, when `need_hk_le_c`,
+// gives h k <= c for every pair with c > 0 (the corrected mapping is valid).
+struct StepNeed {
+  double stiffness_n_per_m = 0.0;  // N/m
+  double damping_ns_per_m = 0.0;   // N s/m
+  double force_duration_s = 0.0;   // s, <= 0: unknown, not used
+};
+[[nodiscard]] int auto_substeps(double dt_s, const std::vector<StepNeed>& needs, int contact_steps,
+                                bool need_hk_le_c);
+
+}  // namespace pb::internal::ode

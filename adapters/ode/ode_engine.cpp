@@ -1,0 +1,592 @@
+// The ODE adapter, engine "ode": builds any case from the pb::Case model
+// through ODE 0.16.2 (double precision) the way its users do: one dWorld and
+// one dSpace per engine, dSpaceCollide with a near callback, contact joints
+// in a dJointGroup emptied every step. Contact laws become soft contacts
+// (native mode) or are applied as forces (inject mode); ode_contact_mapping
+// says how, and mapping() records it.
+#include "planarbench/adapters/ode_engine.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <variant>
+
+#include "ode_contact_mapping.hpp"
+#include "ode_frame.hpp"
+#include "ode_geometry.hpp"
+#include "ode_library.hpp"
+#include "ode_pair_contact.hpp"
+#include "ode_probe.hpp"
+#include "ode_settings.hpp"
+#include "ode_world.hpp"
+#include "planarbench/contact_force.hpp"
+#include "planarbench/episode_tracker.hpp"
+#include "planarbench/errors.hpp"
+
+namespace pb {
+
+namespace {
+
+using internal::ode::FirstTouch;
+using internal::ode::LinearLaw;
+using internal::ode::OdeSettings;
+using internal::ode::OdeWorld;
+using internal::ode::PairCollider;
+using internal::ode::PairContact;
+using internal::ode::SoftContact;
+
+nlohmann::json vec_json(const Vec2& v) {
+  return nlohmann::json::array({v.x(), v.y()});
+}
+
+nlohmann::json response_json(const CollisionResponse& r) {
+  return {{"restitution", r.restitution},
+          {"force_duration_s", r.force_duration_s},
+          {"duration_s", r.duration_s},
+          {"peak_force_n", r.peak_force_n},
+          {"max_penetration_m", r.max_penetration_m},
+          {"impulse_ns", r.impulse_ns}};
+}
+
+nlohmann::json law_json(const ContactLaw& law) {
+  nlohmann::json j = {{"law", contact_law_name(law)}};
+  if (const auto* kv = std::get_if<KelvinVoigt>(&law)) {
+    j["stiffness_n_per_m"] = kv->stiffness_n_per_m;
+    j["damping_ns_per_m"] = kv->damping_ns_per_m;
+    j["damping_depth_m"] = kv->damping_depth_m;
+  } else if (const auto* hz = std::get_if<Hertz>(&law)) {
+    j["stiffness"] = hz->stiffness;
+    j["exponent"] = hz->exponent;
+  } else {
+    const auto& ln = std::get<LankaraniNikravesh>(law);
+    j["stiffness"] = ln.stiffness;
+    j["exponent"] = ln.exponent;
+    j["restitution"] = ln.restitution;
+  }
+  return j;
+}
+
+bool is_plain_kelvin_voigt(const ContactLaw& law) {
+  const auto* kv = std::get_if<KelvinVoigt>(&law);
+  return kv != nullptr && kv->damping_depth_m <= 0.0;
+}
+
+// what a soft contact (a linear spring-damper) cannot carry of the law
+nlohmann::json not_expressed_native(const ContactLaw& law) {
+  nlohmann::json out = nlohmann::json::array();
+  if (const auto* kv = std::get_if<KelvinVoigt>(&law)) {
+    if (kv->damping_depth_m > 0.0) {
+      out.push_back(fmt::format(
+          "the cubic damping ramp over {} m: a constant damper matched to the first impact",
+          kv->damping_depth_m));
+    }
+    return out;
+  }
+  const double n = std::holds_alternative<Hertz>(law) ? std::get<Hertz>(law).exponent
+                                                      : std::get<LankaraniNikravesh>(law).exponent;
+  out.push_back(fmt::format("the nonlinear stiffness K delta^{}: a linear spring k", n));
+  if (std::holds_alternative<LankaraniNikravesh>(law)) {
+    out.push_back(
+        "the hysteresis damping scaled by the approach speed latched at onset: a constant "
+        "damper c");
+  }
+  out.push_back(
+      "the equivalent matches the first impact's effective mass and approach speed only; "
+      "other impacts get other durations and restitutions from it");
+  return out;
+}
+
+// one contact pair's state between samples
+struct PairTrack {
+  double force_n = 0.0;               // N, normal force of the current sample
+  double latched_approach_mps = 0.0;  // m/s, delta_dot at onset (inject mode, eq. 7)
+  bool in_contact = false;            // penetration > 0 at the current sample
+  double depth_m = 0.0;               // m, at the current sample
+  double speed_mps = 0.0;             // m/s, approach speed at the current sample
+  Vec2 normal_ab = Vec2::Zero();
+  Vec2 point_m = Vec2::Zero();
+};
+
+class OdeEngine final : public Engine {
+ public:
+  OdeEngine() : binder_(internal::ode::bind_ode_settings(settings_)) {}
+
+  [[nodiscard]] std::string name() const override { return "ode"; }
+
+  [[nodiscard]] std::string version() const override {
+    return fmt::format(
+        "ODE {} (pkg-config at build time; headers dODE_VERSION {}; "
+        "dGetConfiguration: {})",
+        internal::ode::ode_pkgconfig_version(), internal::ode::ode_header_version(),
+        internal::ode::ode_configuration());
+  }
+
+  [[nodiscard]] Capability supports(const Case& c) const override;
+  [[nodiscard]] const SettingsBinder& settings() const override { return binder_; }
+  void build(const Case& c, const SettingsOverrides& overrides) override;
+  void advance_to(double t_s) override;
+  [[nodiscard]] double time() const override { return static_cast<double>(steps_) * step_s_; }
+  void body_states(std::vector<BodyState>& out) const override;
+  void contacts(std::vector<ContactSample>& out) const override;
+  [[nodiscard]] std::vector<ContactEpisode> episodes() const override {
+    return tracker_.episodes();
+  }
+  [[nodiscard]] long steps() const override { return steps_; }
+  [[nodiscard]] nlohmann::json mapping() const override { return mapping_; }
+  [[nodiscard]] nlohmann::json extra_attributes() const override { return extra_; }
+
+ private:
+  void map_contacts(const std::vector<FirstTouch>& touches);
+  void step_once();
+  void sample_contacts();
+
+  OdeSettings settings_;
+  SettingsBinder binder_;
+
+  Case case_;
+  std::unique_ptr<OdeWorld> world_;
+  std::unique_ptr<PairCollider> collider_;
+  std::vector<PairContact> now_;  // ODE's contacts at the current state
+  std::vector<PairTrack> track_;
+  std::vector<SoftContact> soft_;  // native mode, per pair
+  std::vector<dJointFeedback> feedback_;
+  std::vector<char> joint_made_;   // a contact joint was made this step
+  std::vector<double> angle_rad_;  // continuous angles, per body
+  EpisodeTracker tracker_;
+  bool inject_ = false;
+  bool quick_ = false;
+  double step_s_ = 1e-4;
+  int substeps_ = 1;
+  long steps_ = 0;
+  std::string diverged_;  // non-empty once a body blew up
+  nlohmann::json mapping_ = nlohmann::json::object();
+  nlohmann::json extra_ = nlohmann::json::object();
+};
+
+Capability OdeEngine::supports(const Case& c) const {
+  for (const Body& b : c.bodies) {
+    if (std::holds_alternative<HalfPlane>(b.shape) && !b.fixed) {
+      return {Support::unsupported,
+              fmt::format("body '{}' is a moving half-plane: ODE planes (dCreatePlane) are "
+                          "non-placeable and cannot move",
+                          b.name)};
+    }
+    if (const auto* p = std::get_if<Polygon>(&b.shape)) {
+      if (!internal::ode::is_convex_ccw(p->points_m)) {
+        return {Support::unsupported,
+                fmt::format("body '{}' is a non-convex polygon: ODE's convex geom (dCreateConvex) "
+                            "needs a convex, counter-clockwise outline",
+                            b.name)};
+      }
+    }
+    if (!b.fixed && !(b.mass_kg > 0.0 && b.inertia_kgm2 > 0.0)) {
+      return {Support::unsupported,
+              fmt::format("body '{}' moves but has no positive mass and inertia", b.name)};
+    }
+  }
+  if (settings_.mode == "inject") return {Support::native, ""};
+  std::string mapped;
+  for (const ContactPair& p : c.contacts) {
+    if (is_plain_kelvin_voigt(p.law)) continue;
+    mapped += fmt::format(
+        "{}pair '{}': {} -> linear spring-damper with the first impact's force duration and "
+        "restitution (ODE soft contacts are linear)",
+        mapped.empty() ? "" : "; ", p.name, contact_law_name(p.law));
+  }
+  if (!mapped.empty()) return {Support::mapped, mapped};
+  return {Support::native, ""};
+}
+
+void OdeEngine::build(const Case& c, const SettingsOverrides& overrides) {
+  settings_ = OdeSettings{};
+  binder_.apply(overrides);
+  internal::ode::ensure_ode_ready_in_this_thread();
+  const Capability cap = supports(c);
+  if (cap.support == Support::unsupported) throw EngineError("ode: " + cap.reason);
+
+  case_ = c;
+  inject_ = settings_.mode == "inject";
+  quick_ = settings_.stepper == "quick";
+  steps_ = 0;
+  diverged_.clear();
+  tracker_ = EpisodeTracker{};
+  world_.reset();
+  collider_.reset();
+
+  // first touches from a contact-free run, then the mapping and the step
+  const std::vector<FirstTouch> touches = internal::ode::probe_first_touches(case_, settings_.dt_s);
+  try {
+    map_contacts(touches);
+  } catch (const EngineError&) {
+    throw;
+  } catch (const std::exception& e) {
+    // a law the mapping cannot handle (e.g. a collision that never ends)
+    throw EngineError(fmt::format("ode: cannot map the case's contact laws: {}", e.what()));
+  }
+
+  world_ = std::make_unique<OdeWorld>(case_);
+  if (quick_) dWorldSetQuickStepNumIterations(world_->world(), settings_.quick_iterations);
+  collider_ = std::make_unique<PairCollider>(case_, *world_);
+  const std::size_t pairs = case_.contacts.size();
+  track_.assign(pairs, PairTrack{});
+  feedback_.assign(pairs, dJointFeedback{});
+  joint_made_.assign(pairs, 0);
+  now_.assign(pairs, PairContact{});
+  angle_rad_.clear();
+  for (int i = 0; i < world_->body_count(); ++i)
+    angle_rad_.push_back(case_.bodies[static_cast<std::size_t>(i)].angle_rad);
+
+  // what the bodies became
+  nlohmann::json bodies = nlohmann::json::array();
+  for (std::size_t i = 0; i < case_.bodies.size(); ++i) {
+    const Body& b = case_.bodies[i];
+    std::string held = "fixed: a static geom without body";
+    if (!b.fixed) {
+      held =
+          "Plane2D joint keeps z = 0; the orientation's drift is reset to a pure z rotation "
+          "after every step";
+      for (const RevoluteJoint& j : case_.joints) {
+        if (j.body == static_cast<int>(i)) {
+          held = fmt::format("hinge to the world about z through ({}, {}) m (no Plane2D needed)",
+                             j.anchor_world_m.x(), j.anchor_world_m.y());
+        }
+      }
+    }
+    nlohmann::json jb = {{"body", b.name},
+                         {"geom", world_->geom_description(static_cast<int>(i))},
+                         {"constraint", held}};
+    if (!b.fixed) {
+      jb["mass"] = fmt::format(
+          "dMassSetParameters: m = {} kg, centre of mass at the body origin, "
+          "I_xx = I_yy = I_zz = {} kg m^2 (the case's planar inertia; the "
+          "out-of-plane entries never act)",
+          b.mass_kg, b.inertia_kgm2);
+    }
+    bodies.push_back(jb);
+  }
+  mapping_["bodies"] = bodies;
+  mapping_["frame"] =
+      "case x-y plane = ODE x-y plane at z = 0; case angle = rotation about +z, counter-clockwise; "
+      "quaternion (cos a/2, 0, 0, sin a/2)";
+  mapping_["world"] = {{"gravity_mps2", {case_.gravity_mps2.x(), case_.gravity_mps2.y(), 0.0}},
+                       {"joint_erp", dWorldGetERP(world_->world())},
+                       {"joint_cfm", dWorldGetCFM(world_->world())},
+                       {"contact_surface_layer_m", 0.0},
+                       {"contact_max_correcting_vel", "infinity"},
+                       {"auto_disable", false}};
+  mapping_["stepper"] =
+      quick_ ? fmt::format(
+                   "dWorldQuickStep, {} iterations; dRandSetSeed(step index) before each "
+                   "step under a process-wide lock (ODE's row-order seed is global)",
+                   settings_.quick_iterations)
+             : std::string("dWorldStep (direct LCP solver, deterministic)");
+
+  // the state at t = 0
+  sample_contacts();
+}
+
+// the mapping of every pair, the step, and mapping_["contacts"]
+void OdeEngine::map_contacts(const std::vector<FirstTouch>& touches) {
+  const bool corrected = settings_.damping_mapping == "corrected";
+  std::vector<LinearLaw> linear(case_.contacts.size());
+  std::vector<double> m_eff(case_.contacts.size(), 0.0);
+  std::vector<std::string> m_eff_how(case_.contacts.size());
+  std::vector<internal::ode::StepNeed> needs;
+
+  for (std::size_t p = 0; p < case_.contacts.size(); ++p) {
+    const ContactPair& pair = case_.contacts[p];
+    const FirstTouch& t = touches[p];
+    if (t.found) {
+      m_eff[p] = internal::ode::effective_mass_kg(case_, pair, t.centres_m, t.point_m, t.normal_ab);
+      m_eff_how[p] = fmt::format(
+          "1 / (J M^-1 J^T) along the normal at the first touch of a contact-free probe run "
+          "(same ODE model, dWorldStep at dt), t = {} s",
+          t.time_s);
+    } else {
+      // no touch without contact forces: translation only, at the start
+      double w = 0.0;
+      for (const int bi : {pair.body_a, pair.body_b}) {
+        const Body& b = case_.bodies[static_cast<std::size_t>(bi)];
+        if (!b.fixed) w += 1.0 / b.mass_kg;
+      }
+      m_eff[p] = w > 0.0 ? 1.0 / w : std::numeric_limits<double>::infinity();
+      m_eff_how[p] =
+          "no touch in the contact-free probe run: 1 / sum(1/m) of the moving bodies "
+          "(translation only)";
+    }
+    if (!std::isfinite(m_eff[p])) continue;  // neither body can move along the normal
+    linear[p] = internal::ode::linear_law(pair.law, m_eff[p], t.found ? t.approach_speed_mps : 0.0);
+    const CollisionResponse& r = inject_ ? linear[p].law_response : linear[p].linear_response;
+    needs.push_back({linear[p].stiffness_n_per_m, linear[p].damping_ns_per_m, r.force_duration_s});
+  }
+
+  // the step: dt / substeps
+  if (settings_.substeps > 0) {
+    substeps_ = settings_.substeps;
+  } else {
+    substeps_ = internal::ode::auto_substeps(settings_.dt_s, needs, settings_.contact_steps,
+                                             !inject_ && corrected);
+  }
+  step_s_ = settings_.dt_s / substeps_;
+
+  soft_.assign(case_.contacts.size(), SoftContact{});
+  nlohmann::json pairs = nlohmann::json::array();
+  for (std::size_t p = 0; p < case_.contacts.size(); ++p) {
+    const ContactPair& pair = case_.contacts[p];
+    const FirstTouch& t = touches[p];
+    nlohmann::json jp = {
+        {"pair", pair.name},
+        {"body_a", case_.bodies[static_cast<std::size_t>(pair.body_a)].name},
+        {"body_b", case_.bodies[static_cast<std::size_t>(pair.body_b)].name},
+        {"case_law", law_json(pair.law)},
+        {"threshold",
+         fmt::format("not expressed: ODE reports a contact from depth >= 0 (case threshold {} m)",
+                     pair.threshold_m)}};
+    jp["expected_contact"] = {{"found", t.found}};
+    if (t.found) {
+      jp["expected_contact"]["time_s"] = t.time_s;
+      jp["expected_contact"]["point_m"] = vec_json(t.point_m);
+      jp["expected_contact"]["normal"] = vec_json(t.normal_ab);
+      jp["expected_contact"]["approach_speed_mps"] = t.approach_speed_mps;
+    }
+    jp["expected_contact"]["how"] =
+        "first step at which dCollide reports the pair in a contact-free probe run of the same "
+        "ODE model (dWorldStep at dt); the approach speed is the normal relative speed there";
+    jp["effective_mass_kg"] = m_eff[p];
+    jp["effective_mass_how"] = m_eff_how[p];
+    if (!std::isfinite(m_eff[p])) {
+      jp["expressed_as"] = "nothing: neither body can move along the contact normal";
+      pairs.push_back(jp);
+      continue;
+    }
+    const LinearLaw& lin = linear[p];
+    if (inject_) {
+      jp["expressed_as"] =
+          "no ODE contact joint: the case's law (contact_force_n) evaluated every step at ODE's "
+          "contact geometry (dCollide depth, normal, pos) and applied with dBodyAddForceAtPos, "
+          "equal and opposite; Lankarani-Nikravesh latches delta_dot at onset";
+      jp["law_response_first_impact"] = response_json(lin.law_response);
+      jp["not_expressed"] = nlohmann::json::array(
+          {"the force is explicit over each step (semi-implicit Euler of ODE's integrator)"});
+    } else {
+      soft_[p] = internal::ode::soft_contact(lin.stiffness_n_per_m, lin.damping_ns_per_m, step_s_,
+                                             corrected);
+      jp["expressed_as"] =
+          "ODE contact joint, one per pair (the deepest of dCollide's contacts), mode = "
+          "dContactSoftERP | dContactSoftCFM, mu = 0 (frictionless), no dContactBounce; the "
+          "contact row's lambda >= 0 is the clamp F >= 0";
+      jp["linear_law"] = {{"stiffness_n_per_m", lin.stiffness_n_per_m},
+                          {"damping_ns_per_m", lin.damping_ns_per_m},
+                          {"exact", lin.exact},
+                          {"how", lin.how},
+                          {"mass_kg", lin.mass_kg},
+                          {"approach_speed_mps", lin.approach_speed_mps},
+                          {"law_response", response_json(lin.law_response)},
+                          {"linear_response", response_json(lin.linear_response)}};
+      jp["soft_contact"] = {{"damping_mapping", settings_.damping_mapping},
+                            {"step_s", step_s_},
+                            {"erp", soft_[p].erp},
+                            {"cfm_m_per_ns", soft_[p].cfm},
+                            {"damping_used_ns_per_m", soft_[p].damping_used_ns_per_m},
+                            {"numerical_damping_hk_ns_per_m", soft_[p].numerical_damping_ns_per_m},
+                            {"correction_valid", soft_[p].correction_valid},
+                            {"note", soft_[p].note}};
+      jp["not_expressed"] = not_expressed_native(pair.law);
+    }
+    pairs.push_back(jp);
+  }
+
+  mapping_ = nlohmann::json::object();
+  mapping_["engine"] = "ode";
+  mapping_["mode"] = settings_.mode;
+  mapping_["dt_s"] = settings_.dt_s;
+  mapping_["substeps"] = substeps_;
+  mapping_["step_s"] = step_s_;
+  mapping_["substeps_how"] =
+      settings_.substeps > 0
+          ? std::string("set by ode.substeps")
+          : fmt::format(
+                "auto: smallest n with at least {} steps over each pair's first-impact "
+                "force phase{}",
+                settings_.contact_steps,
+                !inject_ && corrected ? " and h k <= c (corrected mapping valid)" : "");
+  mapping_["contacts"] = pairs;
+  mapping_["integrator"] =
+      "ODE's semi-implicit Euler (velocity first, then position with the new velocity): "
+      "positions under constant acceleration lead the exact parabola by g h t / 2; orientation "
+      "by ODE's default infinitesimal update, 2 atan(omega h / 2) per step instead of omega h";
+  mapping_["collision"] =
+      "dSimpleSpace + dSpaceCollide; the near callback keeps the case's contact pairs only and "
+      "calls dCollide; of its contacts the deepest one is kept (a prism reports each vertex on "
+      "both faces, and several soft contacts would add their springs)";
+  mapping_["contact_point"] =
+      "midpoint of the two geoms' deepest points: ODE's pos shifted by depth/2 along the normal "
+      "(sphere-plane, sphere-convex, convex-plane); sphere-sphere pos is the midpoint already";
+  extra_ = {{"step_s", step_s_},
+            {"substeps", substeps_},
+            {"ode_configuration", internal::ode::ode_configuration()},
+            {"ode_pkgconfig_version", internal::ode::ode_pkgconfig_version()}};
+}
+
+void OdeEngine::advance_to(double t_s) {
+  if (!world_) throw EngineError("ode: advance_to before build");
+  internal::ode::ensure_ode_ready_in_this_thread();
+  const auto target = static_cast<long>(std::floor(t_s / step_s_ + 1e-9));
+  while (steps_ < target && diverged_.empty()) step_once();
+  if (!diverged_.empty()) throw EngineError(diverged_);
+}
+
+void OdeEngine::step_once() {
+  const std::size_t pairs = now_.size();
+  // contact forces of this step, from the contacts at the current state
+  for (std::size_t p = 0; p < pairs; ++p) {
+    joint_made_[p] = 0;
+    const PairContact& pc = now_[p];
+    if (!pc.touching) continue;
+    const dBodyID b1 = dGeomGetBody(pc.geom.g1);
+    const dBodyID b2 = dGeomGetBody(pc.geom.g2);
+    if (inject_) {
+      const double f = track_[p].force_n;  // N, the law at the current state
+      if (!(f > 0.0)) continue;
+      // the normal points into g1: g1 is pushed along it, g2 the other way
+      const Vec2 mid = pc.point_m;
+      dBodyAddForceAtPos(b1, f * pc.geom.normal[0], f * pc.geom.normal[1], 0.0, mid.x(), mid.y(),
+                         0.0);
+      if (b2 != nullptr) {
+        dBodyAddForceAtPos(b2, -f * pc.geom.normal[0], -f * pc.geom.normal[1], 0.0, mid.x(),
+                           mid.y(), 0.0);
+      }
+    } else {
+      dContact contact{};
+      contact.surface.mode = dContactSoftERP | dContactSoftCFM;
+      contact.surface.mu = 0.0;
+      contact.surface.soft_erp = soft_[p].erp;
+      contact.surface.soft_cfm = soft_[p].cfm;
+      contact.geom = pc.geom;
+      const dJointID j = dJointCreateContact(world_->world(), world_->contact_group(), &contact);
+      dJointAttach(j, b1, b2);
+      dJointSetFeedback(j, &feedback_[p]);
+      joint_made_[p] = 1;
+    }
+  }
+
+  if (quick_) {
+    // the row-order seed is process-global: reseed and step under one lock
+    const std::lock_guard<std::mutex> lock(internal::ode::quickstep_random_lock());
+    dRandSetSeed(static_cast<unsigned long>(steps_));
+    dWorldQuickStep(world_->world(), step_s_);
+  } else {
+    dWorldStep(world_->world(), step_s_);
+  }
+  ++steps_;
+
+  // native: the force each contact joint applied over the step; f1 is the
+  // world-frame force on g1's body, the normal points into g1
+  if (!inject_) {
+    for (std::size_t p = 0; p < pairs; ++p) {
+      track_[p].force_n = 0.0;
+      if (!joint_made_[p]) continue;
+      const dJointFeedback& fb = feedback_[p];
+      const dReal* n = now_[p].geom.normal;
+      track_[p].force_n = std::max(0.0, fb.f1[0] * n[0] + fb.f1[1] * n[1] + fb.f1[2] * n[2]);
+    }
+    dJointGroupEmpty(world_->contact_group());
+  }
+
+  world_->remove_planar_drift();
+  if (const int bad = world_->first_blown_up_body(); bad >= 0) {
+    diverged_ = fmt::format(
+        "ode: body '{}' diverged at t = {:.9g} s (non-finite state or |x| > 1e6 m, |v| > 1e6 m/s, "
+        "|omega| > 1e8 rad/s)",
+        case_.bodies[static_cast<std::size_t>(bad)].name, time());
+    return;
+  }
+  for (int i = 0; i < world_->body_count(); ++i) {
+    if (world_->body(i) == nullptr) continue;
+    auto& a = angle_rad_[static_cast<std::size_t>(i)];
+    a = internal::ode::unwrapped_angle(a, world_->state(i).angle_rad);
+  }
+  sample_contacts();
+}
+
+// ODE's contacts at the current state, the force that goes with them, and
+// the episode tracker. Native mode: the force is the one the joint applied
+// over the step that ended now (with the implicit soft contact it is the
+// spring-damper force at the end of that step). Inject mode: the law at the
+// current state, which the next step applies.
+void OdeEngine::sample_contacts() {
+  collider_->collide(now_);
+  const double t = time();
+  for (std::size_t p = 0; p < now_.size(); ++p) {
+    const PairContact& pc = now_[p];
+    PairTrack& tr = track_[p];
+    const ContactPair& pair = case_.contacts[p];
+    const bool in = pc.touching && pc.depth_m > 0.0;
+    if (inject_) {
+      if (in && !tr.in_contact) tr.latched_approach_mps = std::max(pc.approach_speed_mps, 0.0);
+      tr.force_n = pc.touching ? contact_force_n(pair.law, pc.depth_m, pc.approach_speed_mps,
+                                                 tr.latched_approach_mps)
+                               : 0.0;
+    }
+    if (in) {
+      if (!tr.in_contact && steps_ > 0) {
+        // the step before: not in contact; its penetration is estimated from
+        // this one and the approach speed so that the onset is interpolated
+        tracker_.observe(t - step_s_, pair.body_a, pair.body_b,
+                         std::min(0.0, pc.depth_m - step_s_ * pc.approach_speed_mps),
+                         pc.approach_speed_mps, 0.0);
+      }
+      tracker_.observe(t, pair.body_a, pair.body_b, pc.depth_m, pc.approach_speed_mps, tr.force_n);
+      tr.depth_m = pc.depth_m;
+      tr.speed_mps = pc.approach_speed_mps;
+      tr.normal_ab = pc.normal_ab;
+      tr.point_m = pc.point_m;
+    } else if (tr.in_contact) {
+      // separated during the last step: ODE gives no distance, so estimate
+      // the (non-positive) penetration from the last one and the speeds
+      const double s = internal::ode::approach_speed_mps(*world_, pair, tr.point_m, tr.normal_ab);
+      const double d = std::min(0.0, tr.depth_m + 0.5 * step_s_ * (tr.speed_mps + s));
+      tracker_.observe(t, pair.body_a, pair.body_b, d, s, tr.force_n);
+    }
+    tr.in_contact = in;
+  }
+}
+
+void OdeEngine::body_states(std::vector<BodyState>& out) const {
+  out.resize(case_.bodies.size());
+  if (!world_) return;
+  for (int i = 0; i < world_->body_count(); ++i) {
+    BodyState s = world_->state(i);
+    if (world_->body(i) != nullptr) s.angle_rad = angle_rad_[static_cast<std::size_t>(i)];
+    out[static_cast<std::size_t>(i)] = s;
+  }
+}
+
+void OdeEngine::contacts(std::vector<ContactSample>& out) const {
+  out.clear();
+  for (std::size_t p = 0; p < now_.size(); ++p) {
+    const PairContact& pc = now_[p];
+    if (!(pc.touching && pc.depth_m > 0.0)) continue;
+    ContactSample s;
+    s.body_a = case_.contacts[p].body_a;
+    s.body_b = case_.contacts[p].body_b;
+    s.force_n = track_[p].force_n;
+    s.penetration_m = pc.depth_m;
+    s.normal = pc.normal_ab;
+    s.point_m = pc.point_m;
+    out.push_back(s);
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<Engine> make_ode_engine() {
+  return std::make_unique<OdeEngine>();
+}
+
+}  // namespace pb

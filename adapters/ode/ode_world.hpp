@@ -1,0 +1,73 @@
+// The ODE model of a case: one dWorld, one dSpace and one contact joint group
+// per instance, a body per moving case body with its explicit mass and planar
+// inertia, Plane2D for free bodies, a z-axis hinge to the world per revolute
+// joint, and a geom per body. Owns every ODE object and every array ODE
+// points into.
+#pragma once
+
+#include <ode/ode.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ode_geometry.hpp"
+#include "planarbench/case.hpp"
+#include "planarbench/engine.hpp"
+
+namespace pb::internal::ode {
+
+class OdeWorld {
+ public:
+  // Throws EngineError when a body cannot be built (e.g. a moving half-plane).
+  explicit OdeWorld(const Case& c);
+  ~OdeWorld();
+  OdeWorld(const OdeWorld&) = delete;
+  OdeWorld& operator=(const OdeWorld&) = delete;
+
+  [[nodiscard]] dWorldID world() const { return world_; }
+  [[nodiscard]] dSpaceID space() const { return space_; }
+  [[nodiscard]] dJointGroupID contact_group() const { return contact_group_; }
+  // nullptr for fixed bodies
+  [[nodiscard]] dBodyID body(int i) const { return bodies_[static_cast<std::size_t>(i)]; }
+  [[nodiscard]] dGeomID geom(int i) const { return geoms_[static_cast<std::size_t>(i)]; }
+  // the case body index of a geom of this world (stored as the geom's data)
+  [[nodiscard]] static int body_index_of(dGeomID g);
+  [[nodiscard]] int body_count() const { return static_cast<int>(bodies_.size()); }
+  [[nodiscard]] const std::string& geom_description(int i) const {
+    return descriptions_[static_cast<std::size_t>(i)];
+  }
+
+  // state of body i in the case frame; fixed bodies: the case's initial state.
+  // angle_rad is wrapped to (-pi, pi].
+  [[nodiscard]] BodyState state(int i) const;
+  // centres of every body, m (index = Case::bodies index)
+  [[nodiscard]] std::vector<Vec2> centres() const;
+
+  // Plane2D keeps z and the x/y angular velocities at 0 through its rows but
+  // leaves the orientation's drift to the application (ODE manual,
+  // "Plane 2D"; ENGINES.md): keep only the z rotation and spin.
+  void remove_planar_drift();
+
+  // the first moving body whose state is not finite or exceeds the blow-up
+  // bounds (|x| > 1e6 m, |v| > 1e6 m/s, |omega| > 1e8 rad/s); -1 if none
+  [[nodiscard]] int first_blown_up_body() const;
+
+ private:
+  void build(const Case& c);
+  void destroy();
+
+  std::vector<Body> case_bodies_;
+  dWorldID world_ = nullptr;
+  dThreadingImplementationID threading_ = nullptr;
+  dSpaceID space_ = nullptr;
+  dJointGroupID contact_group_ = nullptr;
+  std::vector<dBodyID> bodies_;
+  std::vector<dGeomID> geoms_;
+  std::vector<bool> planar_;                          // held by a Plane2D joint
+  std::vector<std::unique_ptr<ConvexPrism>> prisms_;  // stable addresses for dCreateConvex
+  std::vector<std::unique_ptr<int>> geom_data_;       // body index behind each geom's data
+  std::vector<std::string> descriptions_;
+};
+
+}  // namespace pb::internal::ode

@@ -1,0 +1,104 @@
+// planarbench check: the CI gate (SPEC §6).
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "planarbench/case_loader.hpp"
+#include "planarbench/errors.hpp"
+#include "planarbench/reports/thresholds.hpp"
+#include "planarbench/results_file.hpp"
+
+namespace pb::cli {
+
+namespace {
+
+struct CheckOptions {
+  std::string thresholds;
+  std::string results;
+  std::string junit;
+  std::string summary;
+  bool quiet = false;
+};
+
+// writes text to path through a temporary file and a rename
+void write_text_atomically(const std::filesystem::path& path, const std::string& text) {
+  const auto tmp = path.string() + ".tmp";
+  {
+    std::ofstream f(tmp, std::ios::binary);
+    if (!f) throw InputError(path.string(), 0, "", "cannot be written");
+    f << text;
+    if (!f.flush()) throw InputError(path.string(), 0, "", "write failed");
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+int run_check(const CheckOptions& opt) {
+  const auto thresholds = load_thresholds(opt.thresholds);
+  const ResultsFile results = read_results_file(opt.results);
+
+  std::vector<MetricValue> metrics;
+  std::vector<std::string> diverged;
+  for (const auto& cr : results.cases) {
+    // the case as it was run: its text under the --set case keys stored with it
+    SettingsOverrides case_keys;
+    for (const auto& [key, value] : cr.overrides) {
+      if (is_case_key(key)) case_keys.set(key, value, SettingSource{"--set", 0});
+    }
+    const Case c = parse_case(cr.case_text, cr.case_path, cr.case_name, case_keys);
+    auto m = case_metrics(c, cr);
+    metrics.insert(metrics.end(), m.begin(), m.end());
+    for (const auto& r : cr.runs) {
+      if (r.status == RunStatus::diverged) {
+        diverged.push_back(fmt::format("{}.{}: {}", cr.case_name, r.engine_name, r.reason));
+      }
+    }
+  }
+  const auto outcomes = check_thresholds(thresholds, metrics);
+
+  const std::filesystem::path res(opt.results);
+  const auto stem = res.parent_path() / res.stem();
+  write_text_atomically(opt.junit.empty() ? stem.string() + ".junit.xml" : opt.junit,
+                        junit_xml(outcomes, diverged));
+  write_text_atomically(opt.summary.empty() ? stem.string() + ".summary.md" : opt.summary,
+                        markdown_summary(outcomes, diverged));
+
+  std::size_t failed = 0;
+  for (const auto& o : outcomes) {
+    if (o.passed) continue;
+    ++failed;
+    std::printf("BREACH %s.%s %s vs %s%s: %s  [why: %s]\n", o.threshold.case_name.c_str(),
+                o.threshold.engine.c_str(), o.threshold.metric.c_str(),
+                o.threshold.against.c_str(),
+                o.value.episode >= 0 ? fmt::format(" [episode {}]", o.value.episode).c_str() : "",
+                o.message.c_str(), o.threshold.why.c_str());
+  }
+  for (const auto& d : diverged) std::printf("DIVERGED %s\n", d.c_str());
+  std::printf("%zu of %zu checks passed, %zu breached, %zu run(s) diverged\n",
+              outcomes.size() - failed, outcomes.size(), failed, diverged.size());
+  if (!diverged.empty()) return kExitEngineFailed;
+  return failed ? kExitToleranceBreached : kExitOk;
+}
+
+}  // namespace
+
+Action add_check_command(CLI::App& app) {
+  auto opt = std::make_shared<CheckOptions>();
+  auto* cmd = app.add_subcommand(
+      "check", "Check a results file against a thresholds file (the CI gate); exit 1 on a breach");
+  cmd->add_option("--thresholds", opt->thresholds, "Thresholds file (TOML), e.g. cases/thresholds.toml")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("results", opt->results, "Results file written by `planarbench run`")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--junit", opt->junit, "JUnit XML output (default: RESULTS stem + .junit.xml)");
+  cmd->add_option("--summary", opt->summary,
+                  "Markdown summary output (default: RESULTS stem + .summary.md)");
+  return [opt] { return run_check(*opt); };
+}
+
+}  // namespace pb::cli

@@ -1,0 +1,57 @@
+// planarbench report: the HTML + Markdown report of a results file (SPEC §6).
+#include <cstdio>
+#include <memory>
+
+#include "commands.hpp"
+#include "planarbench/reports/report.hpp"
+
+namespace pb::cli {
+
+namespace {
+
+struct ReportOptionsCli {
+  std::string results;
+  std::string out;
+  std::string thresholds;
+  bool quiet = false;
+};
+
+int run_report(const ReportOptionsCli& opt) {
+  ReportOptions options;
+  options.results = opt.results;
+  options.out_dir = opt.out;
+  options.thresholds = opt.thresholds;
+  const ReportSummary s = write_report(options);
+  if (!opt.quiet) {
+    std::printf("wrote %s and %s (%zu figures, %zu SVG files, %zu metrics", s.html.c_str(),
+                s.markdown.c_str(), s.figures, s.svg_files, s.metrics);
+    if (!opt.thresholds.empty()) {
+      std::printf(", %zu of %zu checks passed", s.checks - s.checks_failed, s.checks);
+    }
+    std::printf(")\n");
+  }
+  return 0;
+}
+
+}  // namespace
+
+Action add_report_command(CLI::App& app) {
+  auto opt = std::make_shared<ReportOptionsCli>();
+  auto* cmd = app.add_subcommand(
+      "report",
+      "Write an HTML + Markdown report of a results file: the paper's figures with every engine "
+      "overlaid, metrics, parameter mapping, capability matrix, timings, provenance");
+  cmd->add_option("results", opt->results, "Results file written by `planarbench run`")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--out", opt->out,
+                  "Report folder (created): report.html, report.md, figures/*.svg")
+      ->required();
+  cmd->add_option("--thresholds", opt->thresholds,
+                  "Thresholds file (TOML): adds pass/fail to every checked metric")
+      ->check(CLI::ExistingFile);
+  cmd->add_flag("--quiet,-q", opt->quiet, "Print nothing on success");
+  return [opt] { return run_report(*opt); };
+}
+
+}  // namespace pb::cli

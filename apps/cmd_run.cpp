@@ -1,0 +1,190 @@
+// planarbench run: every (case, engine) of the selection into one results file.
+#include <fmt/format.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "planarbench/case_loader.hpp"
+#include "planarbench/engines.hpp"
+#include "planarbench/errors.hpp"
+#include "planarbench/results_file.hpp"
+#include "planarbench/runner.hpp"
+
+namespace pb::cli {
+
+namespace {
+
+struct RunOptionsCli {
+  std::string case_spec;
+  std::string engine_spec;
+  std::string out;
+  std::vector<std::string> set;
+  int jobs = 1;
+  bool quiet = false;
+  std::string cases_dir;
+};
+
+// one (case, engine) of the matrix
+struct Task {
+  std::size_t case_index = 0;
+  std::string engine;
+};
+
+// progress lines on stderr: start and end of each run, and the fraction done
+// at most every 2 s while a run takes longer
+class Progress {
+ public:
+  Progress(bool quiet, std::size_t total) : quiet_(quiet), total_(total) {}
+
+  void started(std::size_t i, const std::string& what) {
+    print(fmt::format("[{}/{}] {} ...", i + 1, total_, what));
+  }
+  void fraction(std::size_t i, const std::string& what, double f,
+                std::chrono::steady_clock::time_point& last) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last < std::chrono::seconds(2)) return;
+    last = now;
+    print(fmt::format("[{}/{}] {} {:3.0f} %", i + 1, total_, what, 100.0 * f));
+  }
+  void finished(std::size_t i, const std::string& what, const RunResult& r) {
+    std::string status = run_status_name(r.status);
+    if (r.status != RunStatus::ok) status += ": " + r.reason;
+    print(fmt::format("[{}/{}] {} {} ({:.2f} s, {} steps)", i + 1, total_, what, status,
+                      r.wall_time_s, r.steps));
+  }
+
+ private:
+  void print(const std::string& line) {
+    if (quiet_) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::fprintf(stderr, "%s\n", line.c_str());
+  }
+  bool quiet_;
+  std::size_t total_;
+  std::mutex mutex_;
+};
+
+int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
+  if (opt.jobs < 1 || opt.jobs > 64) {
+    throw InputError("--jobs", 0, "", fmt::format("must be in [1, 64] (got {})", opt.jobs));
+  }
+  const Overrides overrides = parse_overrides(opt.set);
+  // a comma-separated list of case specs is accepted too
+  std::vector<std::filesystem::path> paths;
+  for (std::size_t start = 0; start <= opt.case_spec.size();) {
+    const auto comma = opt.case_spec.find(',', start);
+    const auto item = opt.case_spec.substr(start, comma == std::string::npos ? std::string::npos
+                                                                             : comma - start);
+    for (auto& p : resolve_cases(item, cases_dir(opt.cases_dir))) paths.push_back(std::move(p));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  const auto engines = resolve_engines(opt.engine_spec);
+
+  // everything is loaded and validated before anything runs
+  std::vector<Case> cases;
+  std::vector<SettingsOverrides> case_engine_settings;
+  for (const auto& p : paths) {
+    cases.push_back(load_case(p, overrides.case_keys));
+    case_engine_settings.push_back(engine_settings_for(cases.back(), overrides.engine_keys));
+    for (const auto& name : engines) make_engine(name)->settings().apply(case_engine_settings.back());
+  }
+
+  std::vector<Task> tasks;
+  for (std::size_t ci = 0; ci < cases.size(); ++ci) {
+    for (const auto& e : engines) tasks.push_back(Task{ci, e});
+  }
+  std::vector<RunResult> results(tasks.size());
+  Progress progress(opt.quiet, tasks.size());
+  std::atomic<std::size_t> next{0};
+  std::mutex error_mutex;
+  std::exception_ptr first_error;
+
+  // workers take tasks in order; results land at the task's index, so the
+  // file does not depend on the number of jobs
+  auto worker = [&] {
+    for (std::size_t i = next++; i < tasks.size(); i = next++) {
+      const Task& task = tasks[i];
+      const Case& c = cases[task.case_index];
+      const std::string what = fmt::format("{} x {}", c.name, task.engine);
+      try {
+        progress.started(i, what);
+        auto engine = make_engine(task.engine);
+        auto last = std::chrono::steady_clock::now();
+        RunOptions ro;
+        ro.progress = [&](double f) { progress.fraction(i, what, f, last); };
+        results[i] = run_engine(*engine, c, case_engine_settings[task.case_index], ro);
+        progress.finished(i, what, results[i]);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(error_mutex);
+        if (!first_error) first_error = std::current_exception();
+        next = tasks.size();
+      }
+    }
+  };
+  const int n_threads = std::min<int>(opt.jobs, static_cast<int>(tasks.size()));
+  std::vector<std::thread> threads;
+  for (int t = 1; t < n_threads; ++t) threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads) t.join();
+  if (first_error) std::rethrow_exception(first_error);
+
+  ResultsFile file;
+  file.provenance = provenance(argc, argv);
+  for (std::size_t ci = 0; ci < cases.size(); ++ci) {
+    CaseRuns cr;
+    cr.case_name = cases[ci].name;
+    cr.case_text = cases[ci].source_text;
+    cr.case_path = cases[ci].source_path;
+    cr.overrides = overrides.as_given;
+    for (std::size_t i = 0; i < tasks.size(); ++i) {
+      if (tasks[i].case_index == ci) cr.runs.push_back(std::move(results[i]));
+    }
+    file.cases.push_back(std::move(cr));
+  }
+  write_results_file(opt.out, file);
+
+  int diverged = 0;
+  for (const auto& cr : file.cases) {
+    for (const auto& r : cr.runs) diverged += r.status == RunStatus::diverged;
+  }
+  if (!opt.quiet) {
+    std::fprintf(stderr, "wrote %s (%zu runs%s)\n", opt.out.c_str(), tasks.size(),
+                 diverged ? fmt::format(", {} diverged", diverged).c_str() : "");
+  }
+  return diverged ? kExitEngineFailed : kExitOk;
+}
+
+}  // namespace
+
+Action add_run_command(CLI::App& app, int argc, char** argv) {
+  auto opt = std::make_shared<RunOptionsCli>();
+  auto* cmd = app.add_subcommand("run", "Run cases on engines and write an HDF5 results file");
+  cmd->add_option("--case", opt->case_spec,
+                  "Case name (file stem in the cases folder), path to a case file, a comma-separated "
+                  "list of those, or 'all'")
+      ->required();
+  cmd->add_option("--engine", opt->engine_spec,
+                  "Engine: analytic, reference, mujoco, box2d, ode, a comma-separated list, or 'all'")
+      ->required();
+  cmd->add_option("--out", opt->out, "Results file to write (HDF5; written atomically)")->required();
+  cmd->add_option("--set", opt->set,
+                  "Override a case or engine setting, KEY=VALUE (repeatable), e.g. dt=1e-4, "
+                  "outline_points=360, geometry=exact, contact.stiffness=2e4, "
+                  "mujoco.solimp=\"0.9 0.95 0.001 0.5 2\"; see `planarbench list --settings`")
+      ->take_all();
+  cmd->add_option("--jobs,-j", opt->jobs, "Worker threads for the case x engine matrix")
+      ->default_val(1);
+  cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
+  cmd->add_option("--cases-dir", opt->cases_dir,
+                  "Folder of case files (default: $PLANARBENCH_CASES_DIR or the source tree's cases/)");
+  return [opt, argc, argv] { return run_matrix(*opt, argc, argv); };
+}
+
+}  // namespace pb::cli

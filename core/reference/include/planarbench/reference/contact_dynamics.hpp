@@ -1,0 +1,91 @@
+// The equations of motion of a case with its contact forces, as a first-order
+// ODE y' = f(y) for the integrators:
+//   y = [q (n), u (n), J (one per contact pair)],
+//   q' = u,  M u' = Q_gravity + Q_contact(q, u),  J_k' = F_k,
+// where J_k, the running normal impulse of pair k (N s), is integrated with
+// the motion so that episode impulses are as accurate as the trajectory.
+//
+// Contact forces (paper §2.1.2). For each pair the geometry gives the signed
+// gap s, the normal n (a -> b) and the contact points p_a, p_b (pair_geometry).
+// delta = -s, and delta_dot = -n . (v_b(p_b) - v_a(p_a)) from the velocities of
+// the two material points (the rate of the signed distance, exact for the
+// closest / deepest point pair). The normal force F n acts on b at p_b and
+// -F n on a at p_a, so it produces torques. F depends on the pair's discrete
+// phase, which changes only at located events (reference_solver.hpp):
+//   apart     s > threshold: no force;
+//   touching  contact declared (s <= threshold once), no force: before delta
+//             turns positive, or after the law's clamp released it;
+//   pressing  F = the law without its clamp (unclamped_force.hpp).
+// Inside each phase f is smooth, which is what an order-p integrator needs.
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+#include "planarbench/case.hpp"
+#include "planarbench/reference/ode_system.hpp"
+#include "planarbench/reference/pair_geometry.hpp"
+#include "planarbench/reference/planar_model.hpp"
+
+namespace pb {
+
+enum class ContactPhase { apart, touching, pressing };
+
+struct PairMode {
+  ContactPhase phase = ContactPhase::apart;
+  double approach_speed_mps = 0.0;  // m/s, delta_dot latched when the contact was declared
+};
+
+struct PairEvaluation {
+  ContactGeometry geometry;
+  double gap_rate_mps = 0.0;        // m/s, d(gap)/dt, > 0 separating
+  double unclamped_force_n = 0.0;   // N, the law without the clamp at 0
+  double force_n = 0.0;             // N, applied (phase pressing: unclamped; else 0)
+};
+
+class ContactDynamics final : public OdeSystem {
+ public:
+  // throws std::invalid_argument for what the model or the geometry cannot do
+  ContactDynamics(const Case& c, GeometryMode mode);
+
+  [[nodiscard]] int coordinates() const { return model_.coordinates(); }
+  [[nodiscard]] int pair_count() const { return static_cast<int>(pairs_.size()); }
+  [[nodiscard]] int state_size() const { return 2 * coordinates() + pair_count(); }
+  [[nodiscard]] const PlanarModel& model() const { return model_; }
+  [[nodiscard]] const ContactPair& pair(int k) const { return pairs_[static_cast<std::size_t>(k)]; }
+  // index of pair k's impulse in y
+  [[nodiscard]] int impulse_index(int k) const { return 2 * coordinates() + k; }
+
+  // the discrete phase of every pair; f uses it, the solver changes it
+  [[nodiscard]] std::vector<PairMode>& modes() { return modes_; }
+  [[nodiscard]] const std::vector<PairMode>& modes() const { return modes_; }
+
+  void initial_state(Eigen::VectorXd& y) const;
+
+  // dy = f(y) under the current modes; the pair evaluations at y are kept
+  // (last_pairs) for event detection. No allocation.
+  void derivative(const Eigen::VectorXd& y, Eigen::VectorXd& dy) override;
+  [[nodiscard]] const std::vector<PairEvaluation>& last_pairs() const { return last_; }
+  [[nodiscard]] long evaluations() const { return evaluations_; }
+
+  // pair k at y under `mode`, without the derivative
+  [[nodiscard]] PairEvaluation evaluate_pair(int k, const Eigen::VectorXd& y, const PairMode& mode);
+
+  [[nodiscard]] BodyState body_state(int body, const Eigen::VectorXd& y) const;
+  [[nodiscard]] double energy_j(const Eigen::VectorXd& y) const;
+  [[nodiscard]] double joint_violation_m(const Eigen::VectorXd& y) const;
+
+ private:
+  PairEvaluation evaluate(int k, const PairMode& mode);  // on q_, u_
+
+  PlanarModel model_;
+  std::vector<ContactPair> pairs_;
+  std::vector<std::unique_ptr<PairGeometry>> geometry_;
+  std::vector<PairMode> modes_;
+  std::vector<PairEvaluation> last_;
+  Eigen::VectorXd q_, u_, gen_force_;  // scratch
+  long evaluations_ = 0;
+};
+
+}  // namespace pb

@@ -1,0 +1,34 @@
+// The contact geometry of one contact pair, as the setting `geometry` asks:
+// outline points (the paper, outline_contact.hpp) or the exact shapes
+// (exact_contact.hpp). Two polygons are exact as outlines in both modes.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "planarbench/case.hpp"
+#include "planarbench/reference/contact_geometry.hpp"
+#include "planarbench/reference/exact_contact.hpp"
+#include "planarbench/reference/outline_contact.hpp"
+
+namespace pb {
+
+enum class GeometryMode { outline, exact };
+
+class PairGeometry {
+ public:
+  // throws std::invalid_argument when the pair is not supported (see supported)
+  PairGeometry(const Body& a, const Body& b, GeometryMode mode);
+
+  // whether the pair can be evaluated in this mode; `reason` says why not
+  [[nodiscard]] static bool supported(const Body& a, const Body& b, GeometryMode mode,
+                                      std::string* reason);
+
+  [[nodiscard]] ContactGeometry evaluate(const Pose& pose_a, const Pose& pose_b);
+
+ private:
+  std::optional<OutlineContactSearch> outline_;
+  std::optional<ExactContact> exact_;
+};
+
+}  // namespace pb

@@ -1,0 +1,314 @@
+#include "planarbench/reference/outline_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <variant>
+
+#include "planarbench/outline.hpp"
+
+namespace pb {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// one outline point of either body with its nearest point on the other body
+struct Candidate {
+  int vertex = -1;
+  bool of_a = true;  // the point belongs to body a (its boundary hit is on b)
+  BoundaryHit hit;
+};
+
+// distance from p to the segment s0-s1, squared
+double point_segment_distance2(double px, double py, double s0x, double s0y, double s1x,
+                               double s1y) {
+  const double ex = s1x - s0x;
+  const double ey = s1y - s0y;
+  const double len2 = ex * ex + ey * ey;
+  const double dx = px - s0x;
+  const double dy = py - s0y;
+  const double t = len2 > 0.0 ? std::clamp((dx * ex + dy * ey) / len2, 0.0, 1.0) : 0.0;
+  const double rx = dx - t * ex;
+  const double ry = dy - t * ey;
+  return rx * rx + ry * ry;
+}
+
+// the geometry of the chosen candidate: its boundary point, the outward
+// normal of the boundary feature there, and the a -> b orientation
+ContactGeometry candidate_geometry(const Candidate& c, const WorldOutline& a,
+                                   const WorldOutline& b, bool overlapping) {
+  const WorldOutline& own = c.of_a ? a : b;
+  const WorldOutline& other = c.of_a ? b : a;
+  const Vec2 p(own.x[c.vertex], own.y[c.vertex]);
+  const int e = c.hit.edge;
+  const Vec2 q(other.x[e] + c.hit.t * other.ex[e], other.y[e] + c.hit.t * other.ey[e]);
+
+  // outward normal of `other` at q
+  Vec2 m;
+  if (c.hit.t > 0.0 && c.hit.t < 1.0) {
+    m = Vec2(other.nx[e], other.ny[e]);
+  } else {
+    const Vec2 d = p - q;
+    const double len = d.norm();
+    // below this the direction between the points is rounding noise
+    const double tiny = 1e-12 * (1.0 + p.norm());
+    if (len > tiny) {
+      m = overlapping ? Vec2(-d / len) : Vec2(d / len);
+    } else {
+      const int n = other.size();
+      const int v = c.hit.t <= 0.0 ? e : (e + 1) % n;
+      const int before = (v + n - 1) % n;
+      m = Vec2(other.nx[v] + other.nx[before], other.ny[v] + other.ny[before]);
+      m = m.norm() > 0.0 ? Vec2(m.normalized()) : Vec2(other.nx[v], other.ny[v]);
+    }
+  }
+
+  ContactGeometry g;
+  g.gap_m = overlapping ? -c.hit.distance_m : c.hit.distance_m;
+  if (c.of_a) {
+    // p on a, q on b: m is b's outward normal, so a -> b is -m
+    g.normal = -m;
+    g.point_a_m = p;
+    g.point_b_m = q;
+  } else {
+    g.normal = m;
+    g.point_a_m = q;
+    g.point_b_m = p;
+  }
+  return g;
+}
+
+// every outline point of `own` against the boundary of `other`; `deepest_own`
+// is the deepest of own's points inside other. A point farther from other's
+// bounding box than the closest distance found so far can be neither inside
+// nor the closest: it is skipped (an exact pruning, same result).
+void sweep(const WorldOutline& own, const WorldOutline& other, bool own_is_a,
+           std::vector<BoundaryHit>& hits, Candidate& deepest_own, Candidate& closest) {
+  const int n = own.size();
+  hits.resize(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    const double gx = std::max({other.min_x - own.x[i], own.x[i] - other.max_x, 0.0});
+    const double gy = std::max({other.min_y - own.y[i], own.y[i] - other.max_y, 0.0});
+    if (gx * gx + gy * gy > closest.hit.distance_m * closest.hit.distance_m) {
+      hits[static_cast<std::size_t>(i)] = BoundaryHit{kInf, -1, 0.0, false};
+      continue;
+    }
+    const BoundaryHit hit = nearest_boundary_point(own.x[i], own.y[i], other);
+    hits[static_cast<std::size_t>(i)] = hit;
+    if (hit.inside && hit.distance_m > deepest_own.hit.distance_m) {
+      deepest_own = Candidate{i, own_is_a, hit};
+    }
+    if (hit.distance_m < closest.hit.distance_m) closest = Candidate{i, own_is_a, hit};
+  }
+}
+
+// the run of consecutive inside points around one of them: how many, and
+// their depth-weighted centroid
+struct Run {
+  int points = 0;
+  Vec2 centroid_m = Vec2::Zero();
+};
+
+Run inside_run(const WorldOutline& own, const std::vector<BoundaryHit>& hits, int start) {
+  Run r;
+  if (start < 0) return r;
+  const int n = own.size();
+  double w_sum = 0.0;
+  Vec2 p_sum = Vec2::Zero();
+  auto add = [&](int i) {
+    const double w = hits[static_cast<std::size_t>(i)].distance_m;
+    w_sum += w;
+    p_sum += w * Vec2(own.x[i], own.y[i]);
+    ++r.points;
+  };
+  add(start);
+  int back = 1;
+  for (; back < n; ++back) {
+    const int i = (start - back + n) % n;
+    if (!hits[static_cast<std::size_t>(i)].inside) break;
+    add(i);
+  }
+  for (int fwd = 1; fwd < n - back + 1; ++fwd) {
+    const int i = (start + fwd) % n;
+    if (!hits[static_cast<std::size_t>(i)].inside) break;
+    add(i);
+  }
+  r.centroid_m = w_sum > 0.0 ? Vec2(p_sum / w_sum) : Vec2(own.x[start], own.y[start]);
+  return r;
+}
+
+}  // namespace
+
+std::vector<Vec2> contact_outline(const Shape& shape, int n) {
+  std::vector<Vec2> pts = make_outline(shape, n);
+  if (const auto* hp = std::get_if<HalfPlane>(&shape)) {
+    // close the surface segment into a simple polygon below it
+    pts.emplace_back(0.0, -0.5 * hp->extent_m);
+  }
+  return pts;
+}
+
+void place_outline(const std::vector<Vec2>& local_m, const Pose& pose, WorldOutline& out) {
+  const std::size_t n = local_m.size();
+  // x, y keep a copy of vertex 0 at the end so that edge i ends at vertex i+1
+  out.x.resize(n + 1);
+  out.y.resize(n + 1);
+  out.ex.resize(n);
+  out.ey.resize(n);
+  out.inv_len2.resize(n);
+  out.nx.resize(n);
+  out.ny.resize(n);
+  out.x_per_y.resize(n);
+  const Eigen::Matrix2d r = pose.rotation();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 w = pose.position_m + r * local_m[i];
+    out.x[i] = w.x();
+    out.y[i] = w.y();
+  }
+  out.x[n] = out.x[0];
+  out.y[n] = out.y[0];
+  const auto [xmin, xmax] = std::minmax_element(out.x.begin(), out.x.end());
+  const auto [ymin, ymax] = std::minmax_element(out.y.begin(), out.y.end());
+  out.min_x = *xmin;
+  out.max_x = *xmax;
+  out.min_y = *ymin;
+  out.max_y = *ymax;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double ex = out.x[i + 1] - out.x[i];
+    const double ey = out.y[i + 1] - out.y[i];
+    const double len2 = ex * ex + ey * ey;
+    out.ex[i] = ex;
+    out.ey[i] = ey;
+    out.inv_len2[i] = len2 > 0.0 ? 1.0 / len2 : 0.0;
+    out.x_per_y[i] = ey != 0.0 ? ex / ey : 0.0;
+    // counter-clockwise: the interior is on the left, the outward normal on the right
+    const double len = std::sqrt(len2);
+    out.nx[i] = len > 0.0 ? ey / len : 0.0;
+    out.ny[i] = len > 0.0 ? -ex / len : 0.0;
+  }
+}
+
+BoundaryHit nearest_boundary_point(double px, double py, const WorldOutline& poly) {
+  const int n = poly.size();
+  const double* x = poly.x.data();
+  const double* y = poly.y.data();
+  double best2 = kInf;
+  int best_edge = 0;
+  double best_t = 0.0;
+  bool inside = false;
+  for (int j = 0; j < n; ++j) {
+    // projection onto edge j, clamped to the edge
+    const double dx = px - x[j];
+    const double dy = py - y[j];
+    const double ex = poly.ex[j];
+    const double ey = poly.ey[j];
+    const double t = std::clamp((dx * ex + dy * ey) * poly.inv_len2[j], 0.0, 1.0);
+    const double rx = dx - t * ex;
+    const double ry = dy - t * ey;
+    const double d2 = rx * rx + ry * ry;
+    if (d2 < best2) {
+      best2 = d2;
+      best_edge = j;
+      best_t = t;
+    }
+    // crossing number: a ray from p towards +x crosses edge j
+    if ((y[j] > py) != (y[j + 1] > py) && px < x[j] + (py - y[j]) * poly.x_per_y[j]) {
+      inside = !inside;
+    }
+  }
+  return BoundaryHit{std::sqrt(best2), best_edge, best_t, inside};
+}
+
+OutlineContactSearch::OutlineContactSearch(std::vector<Vec2> outline_a_m,
+                                           std::vector<Vec2> outline_b_m)
+    : local_a_(std::move(outline_a_m)), local_b_(std::move(outline_b_m)) {
+  place_outline(local_a_, Pose{}, world_a_);
+  place_outline(local_b_, Pose{}, world_b_);
+}
+
+ContactGeometry OutlineContactSearch::evaluate(const Pose& pose_a, const Pose& pose_b) {
+  place_outline(local_a_, pose_a, world_a_);
+  place_outline(local_b_, pose_b, world_b_);
+  return evaluate_placed(world_a_, world_b_);
+}
+
+ContactGeometry OutlineContactSearch::evaluate_placed(const WorldOutline& a,
+                                                      const WorldOutline& b) {
+  // deepest point of each body inside the other (overlap), closest point (apart)
+  Candidate deepest_a;
+  deepest_a.hit.distance_m = -1.0;
+  Candidate deepest_b = deepest_a;
+  Candidate closest;
+  closest.hit.distance_m = kInf;
+  // the body with the smaller bounding box first: its points settle the
+  // closest distance early, so that most of the other's are pruned
+  const double area_a = (a.max_x - a.min_x) * (a.max_y - a.min_y);
+  const double area_b = (b.max_x - b.min_x) * (b.max_y - b.min_y);
+  if (area_b < area_a) {
+    sweep(b, a, false, hits_b_, deepest_b, closest);
+    sweep(a, b, true, hits_a_, deepest_a, closest);
+  } else {
+    sweep(a, b, true, hits_a_, deepest_a, closest);
+    sweep(b, a, false, hits_b_, deepest_b, closest);
+  }
+  if (deepest_a.vertex < 0 && deepest_b.vertex < 0) {
+    return candidate_geometry(closest, a, b, false);
+  }
+
+  // overlapping: delta and normal of the deepest point overall
+  const bool a_deepest = deepest_a.hit.distance_m >= deepest_b.hit.distance_m;
+  ContactGeometry g = candidate_geometry(a_deepest ? deepest_a : deepest_b, a, b, true);
+  const double delta = -g.gap_m;
+  // line of action through the centroid of the longer run of inside points
+  const Run run_a = inside_run(a, hits_a_, deepest_a.vertex);
+  const Run run_b = inside_run(b, hits_b_, deepest_b.vertex);
+  const bool use_a = run_a.points > run_b.points || (run_a.points == run_b.points && a_deepest);
+  if (use_a) {
+    g.point_a_m = run_a.centroid_m;
+    g.point_b_m = g.point_a_m - delta * g.normal;
+  } else {
+    g.point_b_m = run_b.centroid_m;
+    g.point_a_m = g.point_b_m + delta * g.normal;
+  }
+  return g;
+}
+
+double paper_two_stage_distance(const WorldOutline& a, const WorldOutline& b) {
+  // stage 1: the closest pair of outline points
+  double best2 = kInf;
+  int bi = 0;
+  int bj = 0;
+  for (int i = 0; i < a.size(); ++i) {
+    for (int j = 0; j < b.size(); ++j) {
+      const double dx = a.x[i] - b.x[j];
+      const double dy = a.y[i] - b.y[j];
+      const double d2 = dx * dx + dy * dy;
+      if (d2 < best2) {
+        best2 = d2;
+        bi = i;
+        bj = j;
+      }
+    }
+  }
+  // stage 2: the edges next to that pair; the distance of two disjoint
+  // segments is the least of their four end-point-to-segment distances
+  const int na = a.size();
+  const int nb = b.size();
+  const int edges_a[2] = {(bi + na - 1) % na, bi};
+  const int edges_b[2] = {(bj + nb - 1) % nb, bj};
+  for (const int ea : edges_a) {
+    for (const int eb : edges_b) {
+      const double a0x = a.x[ea], a0y = a.y[ea], a1x = a.x[ea + 1], a1y = a.y[ea + 1];
+      const double b0x = b.x[eb], b0y = b.y[eb], b1x = b.x[eb + 1], b1y = b.y[eb + 1];
+      best2 = std::min({best2, point_segment_distance2(a0x, a0y, b0x, b0y, b1x, b1y),
+                        point_segment_distance2(a1x, a1y, b0x, b0y, b1x, b1y),
+                        point_segment_distance2(b0x, b0y, a0x, a0y, a1x, a1y),
+                        point_segment_distance2(b1x, b1y, a0x, a0y, a1x, a1y)});
+    }
+  }
+  return std::sqrt(best2);
+}
+
+}  // namespace pb

@@ -1,0 +1,53 @@
+#include "planarbench/reference/pair_geometry.hpp"
+
+#include <stdexcept>
+#include <variant>
+
+namespace pb {
+
+namespace {
+bool both_polygons(const Body& a, const Body& b) {
+  return std::holds_alternative<Polygon>(a.shape) && std::holds_alternative<Polygon>(b.shape);
+}
+}  // namespace
+
+bool PairGeometry::supported(const Body& a, const Body& b, GeometryMode mode,
+                             std::string* reason) {
+  auto refuse = [&](const std::string& why) {
+    if (reason) *reason = why;
+    return false;
+  };
+  if (std::holds_alternative<HalfPlane>(a.shape) && std::holds_alternative<HalfPlane>(b.shape)) {
+    return refuse("contact between two half-planes is not defined");
+  }
+  if (mode == GeometryMode::outline || both_polygons(a, b)) {
+    for (const Body* body : {&a, &b}) {
+      if (!std::holds_alternative<Polygon>(body->shape) && body->outline_points < 3) {
+        return refuse("body '" + body->name + "' has fewer than 3 outline points");
+      }
+    }
+    return true;
+  }
+  if (!ExactContact::supported(a.shape, b.shape)) {
+    return refuse(std::string("geometry=exact has no routine for ") + shape_type_name(a.shape) +
+                  " - " + shape_type_name(b.shape) + " (use geometry=outline)");
+  }
+  return true;
+}
+
+PairGeometry::PairGeometry(const Body& a, const Body& b, GeometryMode mode) {
+  std::string reason;
+  if (!supported(a, b, mode, &reason)) throw std::invalid_argument(reason);
+  if (mode == GeometryMode::outline || both_polygons(a, b)) {
+    outline_.emplace(contact_outline(a.shape, a.outline_points),
+                     contact_outline(b.shape, b.outline_points));
+  } else {
+    exact_.emplace(a.shape, b.shape);
+  }
+}
+
+ContactGeometry PairGeometry::evaluate(const Pose& pose_a, const Pose& pose_b) {
+  return outline_ ? outline_->evaluate(pose_a, pose_b) : exact_->evaluate(pose_a, pose_b);
+}
+
+}  // namespace pb

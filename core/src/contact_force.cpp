@@ -1,0 +1,58 @@
+#include "planarbench/contact_force.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <variant>
+
+namespace pb {
+
+double cubic_step(double x) {
+  if (x <= 0.0) return 0.0;
+  if (x >= 1.0) return 1.0;
+  return x * x * (3.0 - 2.0 * x);
+}
+
+namespace {
+
+// paper eq. 1, damping optionally ramped over damping_depth_m (ADAMS IMPACT)
+double kelvin_voigt_force(const KelvinVoigt& law, double delta, double delta_dot) {
+  const double ramp =
+      law.damping_depth_m > 0.0 ? cubic_step(delta / law.damping_depth_m) : 1.0;
+  return law.stiffness_n_per_m * delta + ramp * law.damping_ns_per_m * delta_dot;
+}
+
+// Hertz: F = K delta^n
+double hertz_force(const Hertz& law, double delta) {
+  return law.stiffness * std::pow(delta, law.exponent);
+}
+
+// paper eq. 7 (Lankarani & Nikravesh 1990): hysteresis damping scaled by the
+// approach speed latched at onset; without an approach (a contact that starts
+// at rest) the damping term is undefined and left out.
+double lankarani_nikravesh_force(const LankaraniNikravesh& law, double delta, double delta_dot,
+                                 double approach_speed) {
+  const double elastic = law.stiffness * std::pow(delta, law.exponent);
+  if (!(approach_speed > 0.0)) return elastic;
+  const double e = law.restitution;
+  return elastic * (1.0 + 0.75 * (1.0 - e * e) * delta_dot / approach_speed);
+}
+
+}  // namespace
+
+double contact_force_n(const ContactLaw& law, double delta_m, double delta_dot_mps,
+                       double approach_speed_mps) {
+  if (!(delta_m > 0.0)) return 0.0;
+  double f = 0.0;
+  if (const auto* kv = std::get_if<KelvinVoigt>(&law)) {
+    f = kelvin_voigt_force(*kv, delta_m, delta_dot_mps);
+  } else if (const auto* hz = std::get_if<Hertz>(&law)) {
+    f = hertz_force(*hz, delta_m);
+  } else {
+    f = lankarani_nikravesh_force(std::get<LankaraniNikravesh>(law), delta_m, delta_dot_mps,
+                                  approach_speed_mps);
+  }
+  // a normal contact force never pulls (SPEC §1)
+  return std::max(f, 0.0);
+}
+
+}  // namespace pb

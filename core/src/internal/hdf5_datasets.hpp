@@ -1,0 +1,207 @@
+// Datasets of the results file: arrays of doubles ([n] or [n, cols]) and
+// compound tables (one struct per row). Every dataset carries a `unit`
+// attribute; tables carry `unit` and `fields` string arrays, one entry per
+// field in field order. Small datasets are contiguous; above kChunkRows rows
+// they are chunked, shuffled and deflated. No creation times are stored, so
+// equal inputs give equal bytes.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "hdf5_attributes.hpp"
+#include "hdf5_handle.hpp"
+
+namespace pb::internal {
+
+// rows per chunk, and the size above which datasets are compressed
+inline constexpr hsize_t kChunkRows = 4096;
+// zlib level: 4 is most of level 9's gain on smooth trajectories at a
+// fraction of its time
+inline constexpr unsigned kDeflateLevel = 4;
+// bytes of a body name in a table (NUL-padded, h5py dtype S32)
+inline constexpr std::size_t kNameBytes = 32;
+
+// creation properties of a dataset of shape dims[0..rank): no times; above
+// kChunkRows rows, chunks of kChunkRows rows, shuffled then deflated
+inline Hid dataset_properties(int rank, const hsize_t* dims, const std::string& object) {
+  Hid dcpl = owned_plist(H5Pcreate(H5P_DATASET_CREATE), object, "cannot create properties");
+  check(H5Pset_obj_track_times(dcpl.get(), 0), object, "cannot switch off time tracking");
+  if (dims[0] > kChunkRows) {
+    hsize_t chunk[2] = {kChunkRows, rank > 1 ? dims[1] : 1};
+    check(H5Pset_chunk(dcpl.get(), rank, chunk), object, "cannot set the chunk size");
+    check(H5Pset_shuffle(dcpl.get()), object, "cannot set the shuffle filter");
+    check(H5Pset_deflate(dcpl.get(), kDeflateLevel), object, "cannot set the deflate filter");
+  }
+  return dcpl;
+}
+
+// creates dataset `name` in loc and writes buf (nothing to write for 0 rows)
+inline Hid create_and_write(hid_t loc, const char* name, hid_t file_type, hid_t mem_type, int rank,
+                            const hsize_t* dims, const void* buf) {
+  const std::string object = object_path(loc) + "/" + name;
+  Hid space = owned_space(H5Screate_simple(rank, dims, nullptr), object, "cannot create a space");
+  Hid dcpl = dataset_properties(rank, dims, object);
+  Hid d = owned_dataset(
+      H5Dcreate2(loc, name, file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT), object,
+      "cannot create the dataset");
+  if (dims[0] > 0) {
+    check(H5Dwrite(d.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf), object,
+          "cannot write the dataset");
+  }
+  return d;
+}
+
+// [rows] (cols == 0) or [rows, cols] doubles, row-major, with its unit
+inline void write_double_dataset(hid_t loc, const char* name, const std::vector<double>& values,
+                                 hsize_t cols, const std::string& unit) {
+  const hsize_t rows = cols == 0 ? values.size() : values.size() / cols;
+  const hsize_t dims[2] = {rows, cols};
+  Hid d = create_and_write(loc, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, cols == 0 ? 1 : 2, dims,
+                           values.data());
+  write_string_attribute(d.get(), "unit", unit);
+  d.close(object_path(loc) + "/" + name);
+}
+
+// opens dataset `name` of loc; Hdf5Error naming it when it is missing
+inline Hid open_dataset(hid_t loc, const char* name) {
+  const std::string parent = object_path(loc);
+  const std::string object = (parent == "/" ? "" : parent) + "/" + name;
+  const htri_t exists = H5Lexists(loc, name, H5P_DEFAULT);
+  if (exists <= 0) {
+    hdf5_last_error();
+    throw Hdf5Error(object, "dataset is missing");
+  }
+  return owned_dataset(H5Dopen2(loc, name, H5P_DEFAULT), object, "cannot open the dataset");
+}
+
+// reads [n] (cols == 0) or [n, cols] doubles, row-major
+inline std::vector<double> read_double_dataset(hid_t loc, const char* name, hsize_t cols) {
+  Hid d = open_dataset(loc, name);
+  const std::string object = object_path(d.get());
+  Hid space = owned_space(H5Dget_space(d.get()), object, "cannot read the dataset's space");
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  hsize_t dims[2] = {0, 0};
+  const int want = cols == 0 ? 1 : 2;
+  if (rank != want || H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0 ||
+      (cols != 0 && dims[1] != cols)) {
+    hdf5_last_error();
+    throw Hdf5Error(object, cols == 0 ? "expected shape [n]"
+                                      : "expected shape [n, " + std::to_string(cols) + "]");
+  }
+  std::vector<double> out(dims[0] * (cols == 0 ? 1 : cols));
+  if (!out.empty()) {
+    check(H5Dread(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), object,
+          "cannot read the dataset");
+  }
+  return out;
+}
+
+// ---- compound tables --------------------------------------------------------
+
+enum class FieldKind { f8, name, f8x2 };
+
+// one field of a table row: its name, kind, offset in the C++ record, unit
+struct TableField {
+  const char* name;
+  FieldKind kind;
+  std::size_t offset;  // bytes, offsetof(Record, member)
+  const char* unit;    // "1" dimensionless, "" for names
+};
+
+struct TableLayout {
+  std::size_t record_size;  // bytes, sizeof(Record)
+  std::vector<TableField> fields;
+};
+
+// the type of one field, in memory (native doubles) or in the file (little-endian)
+inline Hid field_type(FieldKind kind, bool in_file, const std::string& object) {
+  const hid_t f8 = in_file ? H5T_IEEE_F64LE : H5T_NATIVE_DOUBLE;
+  switch (kind) {
+    case FieldKind::f8:
+      return owned_type(H5Tcopy(f8), object, "cannot copy a float type");
+    case FieldKind::name: {
+      Hid t = owned_type(H5Tcopy(H5T_C_S1), object, "cannot copy the string type");
+      check(H5Tset_size(t.get(), kNameBytes), object, "cannot size the name type");
+      check(H5Tset_strpad(t.get(), H5T_STR_NULLPAD), object, "cannot set padding");
+      check(H5Tset_cset(t.get(), H5T_CSET_UTF8), object, "cannot set UTF-8");
+      return t;
+    }
+    case FieldKind::f8x2: {
+      const hsize_t two = 2;
+      return owned_type(H5Tarray_create2(f8, 1, &two), object, "cannot create an array type");
+    }
+  }
+  throw Hdf5Error(object, "unknown field kind");
+}
+
+// the row type: in memory at the record's offsets, in the file packed
+inline Hid table_type(const TableLayout& layout, bool in_file, const std::string& object) {
+  std::vector<Hid> types;
+  std::size_t packed = 0;
+  for (const auto& f : layout.fields) {
+    types.push_back(field_type(f.kind, in_file, object));
+    packed += H5Tget_size(types.back().get());
+  }
+  Hid t = owned_type(H5Tcreate(H5T_COMPOUND, in_file ? packed : layout.record_size), object,
+                     "cannot create the row type");
+  std::size_t offset = 0;
+  for (std::size_t i = 0; i < layout.fields.size(); ++i) {
+    const auto& f = layout.fields[i];
+    check(H5Tinsert(t.get(), f.name, in_file ? offset : f.offset, types[i].get()), object,
+          std::string("cannot add field ") + f.name);
+    offset += H5Tget_size(types[i].get());
+  }
+  return t;
+}
+
+// writes rows (an array of n records laid out as `layout`) with unit and fields
+inline void write_table(hid_t loc, const char* name, const TableLayout& layout, const void* rows,
+                        hsize_t n) {
+  const std::string object = object_path(loc) + "/" + name;
+  Hid file_type = table_type(layout, true, object);
+  Hid mem_type = table_type(layout, false, object);
+  Hid d = create_and_write(loc, name, file_type.get(), mem_type.get(), 1, &n, rows);
+  std::vector<std::string> units, fields;
+  for (const auto& f : layout.fields) {
+    units.emplace_back(f.unit);
+    fields.emplace_back(f.name);
+  }
+  write_string_array_attribute(d.get(), "unit", units);
+  write_string_array_attribute(d.get(), "fields", fields);
+  d.close(object);
+}
+
+// reads a table into records laid out as `layout`; every field must be present
+template <typename Record>
+std::vector<Record> read_table(hid_t loc, const char* name, const TableLayout& layout) {
+  Hid d = open_dataset(loc, name);
+  const std::string object = object_path(d.get());
+  Hid file_type = owned_type(H5Dget_type(d.get()), object, "cannot read the dataset's type");
+  if (H5Tget_class(file_type.get()) != H5T_COMPOUND) {
+    throw Hdf5Error(object, "is not a table (compound dataset)");
+  }
+  for (const auto& f : layout.fields) {
+    if (H5Tget_member_index(file_type.get(), f.name) < 0) {
+      hdf5_last_error();
+      throw Hdf5Error(object, std::string("field '") + f.name + "' is missing");
+    }
+  }
+  Hid space = owned_space(H5Dget_space(d.get()), object, "cannot read the dataset's space");
+  hsize_t n = 0;
+  if (H5Sget_simple_extent_ndims(space.get()) != 1 ||
+      H5Sget_simple_extent_dims(space.get(), &n, nullptr) < 0) {
+    hdf5_last_error();
+    throw Hdf5Error(object, "expected shape [n]");
+  }
+  std::vector<Record> out(n);
+  if (n > 0) {
+    Hid mem_type = table_type(layout, false, object);
+    check(H5Dread(d.get(), mem_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), object,
+          "cannot read the table");
+  }
+  return out;
+}
+
+}  // namespace pb::internal

@@ -1,0 +1,533 @@
+#include "planarbench/results_file.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "internal/hdf5_attributes.hpp"
+#include "internal/hdf5_datasets.hpp"
+#include "internal/hdf5_handle.hpp"
+#include "internal/hdf5_sha256.hpp"
+#include "planarbench/build_info.hpp"
+#include "planarbench/errors.hpp"
+
+namespace pb {
+
+namespace fs = std::filesystem;
+using internal::Hdf5Error;
+using internal::Hid;
+
+namespace {
+
+// ---- table rows as C++ records (field order = column order in the file) ----
+
+struct ContactRecord {
+  double time_s;
+  char body_a[internal::kNameBytes];
+  char body_b[internal::kNameBytes];
+  double force_n;
+  double penetration_m;
+  double normal[2];
+  double point_m[2];
+};
+
+struct EventRecord {
+  char body_a[internal::kNameBytes];
+  char body_b[internal::kNameBytes];
+  double onset_time_s;
+  double offset_time_s;
+  double approach_speed_mps;
+  double separation_speed_mps;
+  double restitution;
+  double peak_force_n;
+  double impulse_ns;
+  double max_penetration_m;
+};
+
+const internal::TableLayout& contact_layout() {
+  using internal::FieldKind;
+  static const internal::TableLayout layout{
+      sizeof(ContactRecord),
+      {{"time", FieldKind::f8, offsetof(ContactRecord, time_s), "s"},
+       {"body_a", FieldKind::name, offsetof(ContactRecord, body_a), ""},
+       {"body_b", FieldKind::name, offsetof(ContactRecord, body_b), ""},
+       {"force_n", FieldKind::f8, offsetof(ContactRecord, force_n), "N"},
+       {"penetration", FieldKind::f8, offsetof(ContactRecord, penetration_m), "m"},
+       {"normal", FieldKind::f8x2, offsetof(ContactRecord, normal), "1"},
+       {"point", FieldKind::f8x2, offsetof(ContactRecord, point_m), "m"}}};
+  return layout;
+}
+
+const internal::TableLayout& event_layout() {
+  using internal::FieldKind;
+  static const internal::TableLayout layout{
+      sizeof(EventRecord),
+      {{"body_a", FieldKind::name, offsetof(EventRecord, body_a), ""},
+       {"body_b", FieldKind::name, offsetof(EventRecord, body_b), ""},
+       {"onset_time", FieldKind::f8, offsetof(EventRecord, onset_time_s), "s"},
+       {"offset_time", FieldKind::f8, offsetof(EventRecord, offset_time_s), "s"},
+       {"approach_speed", FieldKind::f8, offsetof(EventRecord, approach_speed_mps), "m/s"},
+       {"separation_speed", FieldKind::f8, offsetof(EventRecord, separation_speed_mps), "m/s"},
+       {"restitution", FieldKind::f8, offsetof(EventRecord, restitution), "1"},
+       {"peak_force", FieldKind::f8, offsetof(EventRecord, peak_force_n), "N"},
+       {"impulse", FieldKind::f8, offsetof(EventRecord, impulse_ns), "N s"},
+       {"max_penetration", FieldKind::f8, offsetof(EventRecord, max_penetration_m), "m"}}};
+  return layout;
+}
+
+std::string child_path(hid_t loc, const std::string& name) {
+  const std::string parent = internal::object_path(loc);
+  return (parent == "/" ? "" : parent) + "/" + name;
+}
+
+// ---- writing ----------------------------------------------------------------
+
+// a group that records no times and remembers the order its children were made
+Hid create_group(hid_t loc, const std::string& name) {
+  const std::string object = child_path(loc, name);
+  if (name.empty() || name == "." || name.find('/') != std::string::npos) {
+    throw Hdf5Error(object, fmt::format("'{}' cannot be a group name", name));
+  }
+  Hid gcpl = internal::owned_plist(H5Pcreate(H5P_GROUP_CREATE), object, "cannot create properties");
+  internal::check(H5Pset_obj_track_times(gcpl.get(), 0), object, "cannot switch off times");
+  internal::check(
+      H5Pset_link_creation_order(gcpl.get(), H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED), object,
+      "cannot track creation order");
+  return internal::owned_group(H5Gcreate2(loc, name.c_str(), H5P_DEFAULT, gcpl.get(), H5P_DEFAULT),
+                               object, "cannot create the group");
+}
+
+// copies a body name into a NUL-padded table cell
+void put_name(char (&cell)[internal::kNameBytes], const std::vector<std::string>& names, int index,
+              const std::string& object) {
+  if (index < 0 || static_cast<std::size_t>(index) >= names.size()) {
+    throw Hdf5Error(
+        object, fmt::format("body index {} is not in body_names ({} names)", index, names.size()));
+  }
+  const std::string& name = names[static_cast<std::size_t>(index)];
+  if (name.size() > internal::kNameBytes) {
+    throw Hdf5Error(
+        object, fmt::format("body name '{}' is longer than {} bytes", name, internal::kNameBytes));
+  }
+  std::memcpy(cell, name.data(), name.size());
+}
+
+void write_h5md(hid_t file) {
+  // H5MD 1.1 metadata (https://www.nongnu.org/h5md/h5md.html#h5md-metadata)
+  Hid h5md = create_group(file, "h5md");
+  internal::write_int32_array_attribute(h5md.get(), "version", {1, 1});
+  Hid author = create_group(h5md.get(), "author");
+  internal::write_string_attribute(author.get(), "name", "planarbench");
+  Hid creator = create_group(h5md.get(), "creator");
+  internal::write_string_attribute(creator.get(), "name", "planarbench");
+  internal::write_string_attribute(creator.get(), "version", build_info::kVersion);
+}
+
+void write_parameters(hid_t file, const ResultsProvenance& p) {
+  Hid g = create_group(file, "parameters");
+  internal::write_string_attribute(g.get(), "build_revision", build_info::kRevision);
+  internal::write_string_attribute(g.get(), "compiler", build_info::kCompiler);
+  internal::write_string_attribute(g.get(), "compiler_flags", build_info::kFlags);
+  internal::write_string_attribute(g.get(), "build_type", build_info::kBuildType);
+  internal::write_string_attribute(g.get(), "host", p.host);
+  internal::write_string_attribute(g.get(), "utc_time", p.utc_time);
+  internal::write_string_attribute(g.get(), "planarbench_version", build_info::kVersion);
+  internal::write_string_attribute(g.get(), "command_line", p.command_line);
+}
+
+// a list of 2-vectors as row-major [n, 2] doubles
+std::vector<double> flatten(const std::vector<Vec2>& v) {
+  std::vector<double> out;
+  out.reserve(2 * v.size());
+  for (const Vec2& x : v) {
+    out.push_back(x.x());
+    out.push_back(x.y());
+  }
+  return out;
+}
+
+void write_body(hid_t bodies, const BodyTrajectory& b) {
+  Hid g = create_group(bodies, b.name);
+  internal::write_double_dataset(g.get(), "time", b.time_s, 0, "s");
+  internal::write_double_dataset(g.get(), "position", flatten(b.position_m), 2, "m");
+  internal::write_double_dataset(g.get(), "angle", b.angle_rad, 0, "rad");
+  internal::write_double_dataset(g.get(), "velocity", flatten(b.velocity_mps), 2, "m/s");
+  internal::write_double_dataset(g.get(), "angular_velocity", b.angular_velocity_radps, 0, "rad/s");
+}
+
+void write_contacts(hid_t run, const RunResult& r) {
+  const std::string object = child_path(run, "contacts");
+  std::vector<ContactRecord> rows(r.contacts.size(), ContactRecord{});
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const ContactRow& c = r.contacts[i];
+    ContactRecord& row = rows[i];
+    row.time_s = c.time_s;
+    put_name(row.body_a, r.body_names, c.sample.body_a, object);
+    put_name(row.body_b, r.body_names, c.sample.body_b, object);
+    row.force_n = c.sample.force_n;
+    row.penetration_m = c.sample.penetration_m;
+    row.normal[0] = c.sample.normal.x();
+    row.normal[1] = c.sample.normal.y();
+    row.point_m[0] = c.sample.point_m.x();
+    row.point_m[1] = c.sample.point_m.y();
+  }
+  internal::write_table(run, "contacts", contact_layout(), rows.data(), rows.size());
+}
+
+void write_events(hid_t run, const RunResult& r) {
+  const std::string object = child_path(run, "events");
+  std::vector<EventRecord> rows(r.events.size(), EventRecord{});
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const ContactEpisode& e = r.events[i];
+    EventRecord& row = rows[i];
+    put_name(row.body_a, r.body_names, e.body_a, object);
+    put_name(row.body_b, r.body_names, e.body_b, object);
+    row.onset_time_s = e.onset_time_s;
+    row.offset_time_s = e.offset_time_s;
+    row.approach_speed_mps = e.approach_speed_mps;
+    row.separation_speed_mps = e.separation_speed_mps;
+    row.restitution = e.restitution;
+    row.peak_force_n = e.peak_force_n;
+    row.impulse_ns = e.impulse_ns;
+    row.max_penetration_m = e.max_penetration_m;
+  }
+  internal::write_table(run, "events", event_layout(), rows.data(), rows.size());
+}
+
+// JSON text; invalid UTF-8 in a string becomes U+FFFD instead of failing the write
+template <typename Json>
+std::string json_text(const Json& j) {
+  return j.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+void write_run(hid_t case_group, const RunResult& r) {
+  Hid g = create_group(case_group, r.engine_name);
+  internal::write_string_attribute(g.get(), "engine_version", r.engine_version);
+  internal::write_string_attribute(g.get(), "status", run_status_name(r.status));
+  internal::write_string_attribute(g.get(), "reason", r.reason);
+  internal::write_double_attribute(g.get(), "diverged_at_s", r.diverged_at_s);
+  internal::write_string_attribute(g.get(), "settings", json_text(r.settings));
+  internal::write_string_attribute(g.get(), "mapping", json_text(r.mapping));
+  internal::write_string_attribute(g.get(), "extra", json_text(r.extra));
+  internal::write_double_attribute(g.get(), "wall_time_s", r.wall_time_s);
+  internal::write_int64_attribute(g.get(), "steps", static_cast<std::int64_t>(r.steps));
+  internal::write_string_array_attribute(g.get(), "body_names", r.body_names);
+
+  // an unsupported run has no trajectories: no bodies group (SPEC §5)
+  if (r.status != RunStatus::unsupported || !r.bodies.empty()) {
+    Hid bodies = create_group(g.get(), "bodies");
+    for (const auto& b : r.bodies) write_body(bodies.get(), b);
+  }
+  // tables are always present, zero rows when empty, so readers need no special case
+  write_contacts(g.get(), r);
+  write_events(g.get(), r);
+}
+
+void write_case(hid_t runs, const CaseRuns& c) {
+  Hid g = create_group(runs, c.case_name);
+  internal::write_string_attribute(g.get(), "case_text", c.case_text);
+  internal::write_string_attribute(g.get(), "case_sha256", internal::sha256_hex(c.case_text));
+  internal::write_string_attribute(g.get(), "case_path", c.case_path);
+  // --set overrides as a JSON object, in the order given
+  nlohmann::ordered_json overrides = nlohmann::ordered_json::object();
+  for (const auto& [key, value] : c.overrides) overrides[key] = value;
+  internal::write_string_attribute(g.get(), "overrides", json_text(overrides));
+  for (const auto& r : c.runs) write_run(g.get(), r);
+}
+
+// the whole file at `path`; all handles are closed before the file is
+void write_file(const fs::path& path, const ResultsFile& results) {
+  const std::string object = "/";
+  Hid fcpl = internal::owned_plist(H5Pcreate(H5P_FILE_CREATE), object, "cannot create properties");
+  internal::check(H5Pset_obj_track_times(fcpl.get(), 0), object, "cannot switch off times");
+  Hid file = internal::owned_file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.get(), H5P_DEFAULT),
+                                  object, fmt::format("cannot create '{}'", path.string()));
+  write_h5md(file.get());
+  write_parameters(file.get(), results.provenance);
+  {
+    Hid runs = create_group(file.get(), "runs");
+    for (const auto& c : results.cases) write_case(runs.get(), c);
+  }
+  file.close(object);
+}
+
+// flushes a closed file's data to the disk
+void fsync_path(const fs::path& path, int flags) {
+  const int fd = ::open(path.c_str(), flags);
+  if (fd < 0) throw std::system_error(errno, std::generic_category(), "open " + path.string());
+  const int rc = ::fsync(fd);
+  const int err = errno;
+  ::close(fd);
+  if (rc != 0) throw std::system_error(err, std::generic_category(), "fsync " + path.string());
+}
+
+// ---- reading ----------------------------------------------------------------
+
+Hid open_group(hid_t loc, const std::string& name, const std::string& missing_hint = "") {
+  const std::string object = child_path(loc, name);
+  if (H5Lexists(loc, name.c_str(), H5P_DEFAULT) <= 0) {
+    internal::hdf5_last_error();
+    throw Hdf5Error(object, "group is missing" + missing_hint);
+  }
+  return internal::owned_group(H5Gopen2(loc, name.c_str(), H5P_DEFAULT), object,
+                               "cannot open the group");
+}
+
+// names of a group's children, in creation order when the file tracks it
+std::vector<std::string> child_names(hid_t group) {
+  const std::string object = internal::object_path(group);
+  H5G_info_t info{};
+  internal::check(H5Gget_info(group, &info), object, "cannot list the group");
+  Hid gcpl = internal::owned_plist(H5Gget_create_plist(group), object, "cannot read properties");
+  unsigned order_flags = 0;
+  internal::check(H5Pget_link_creation_order(gcpl.get(), &order_flags), object,
+                  "cannot read properties");
+  const H5_index_t index =
+      (order_flags & H5P_CRT_ORDER_TRACKED) != 0 ? H5_INDEX_CRT_ORDER : H5_INDEX_NAME;
+  std::vector<std::string> names;
+  for (hsize_t i = 0; i < info.nlinks; ++i) {
+    const ssize_t n =
+        H5Lget_name_by_idx(group, ".", index, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+    if (n < 0) internal::check(-1, object, "cannot list the group");
+    std::string name(static_cast<std::size_t>(n) + 1, '\0');
+    H5Lget_name_by_idx(group, ".", index, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT);
+    name.resize(static_cast<std::size_t>(n));
+    names.push_back(std::move(name));
+  }
+  return names;
+}
+
+template <typename Json>
+Json parse_json_attribute(hid_t loc, const char* name) {
+  const std::string text = internal::read_string_attribute(loc, name);
+  try {
+    return Json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    throw Hdf5Error(internal::object_path(loc),
+                    fmt::format("attribute '{}' is not JSON ({})", name, e.what()));
+  }
+}
+
+RunStatus parse_status(hid_t run) {
+  const std::string s = internal::read_string_attribute(run, "status");
+  for (RunStatus st : {RunStatus::ok, RunStatus::diverged, RunStatus::unsupported}) {
+    if (s == run_status_name(st)) return st;
+  }
+  throw Hdf5Error(internal::object_path(run),
+                  fmt::format("status '{}' is not ok, diverged or unsupported", s));
+}
+
+std::vector<Vec2> unflatten(const std::vector<double>& flat) {
+  std::vector<Vec2> out(flat.size() / 2);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = Vec2(flat[2 * i], flat[2 * i + 1]);
+  return out;
+}
+
+BodyTrajectory read_body(hid_t bodies, const std::string& name) {
+  Hid g = open_group(bodies, name);
+  BodyTrajectory b;
+  b.name = name;
+  b.time_s = internal::read_double_dataset(g.get(), "time", 0);
+  b.position_m = unflatten(internal::read_double_dataset(g.get(), "position", 2));
+  b.angle_rad = internal::read_double_dataset(g.get(), "angle", 0);
+  b.velocity_mps = unflatten(internal::read_double_dataset(g.get(), "velocity", 2));
+  b.angular_velocity_radps = internal::read_double_dataset(g.get(), "angular_velocity", 0);
+  return b;
+}
+
+// a table cell's name back to its index in body_names
+int body_index(const char (&cell)[internal::kNameBytes], const std::vector<std::string>& names,
+               const std::string& object, std::size_t row) {
+  std::size_t len = 0;
+  while (len < internal::kNameBytes && cell[len] != '\0') ++len;
+  const std::string name(cell, len);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i] == name) return static_cast<int>(i);
+  }
+  throw Hdf5Error(object, fmt::format("row {}: body '{}' is not in body_names", row, name));
+}
+
+RunResult read_run(hid_t case_group, const std::string& case_name, const std::string& engine) {
+  Hid g = open_group(case_group, engine);
+  const std::string object = internal::object_path(g.get());
+  RunResult r;
+  r.case_name = case_name;
+  r.engine_name = engine;
+  r.engine_version = internal::read_string_attribute(g.get(), "engine_version");
+  r.status = parse_status(g.get());
+  r.reason = internal::read_string_attribute(g.get(), "reason");
+  r.diverged_at_s = internal::read_double_attribute(g.get(), "diverged_at_s");
+  r.settings = parse_json_attribute<nlohmann::json>(g.get(), "settings");
+  r.mapping = parse_json_attribute<nlohmann::json>(g.get(), "mapping");
+  r.extra = parse_json_attribute<nlohmann::json>(g.get(), "extra");
+  r.wall_time_s = internal::read_double_attribute(g.get(), "wall_time_s");
+  r.steps = static_cast<long>(internal::read_int64_attribute(g.get(), "steps"));
+  r.body_names = internal::read_strings(g.get(), "body_names");
+
+  // bodies are absent for unsupported runs
+  if (H5Lexists(g.get(), "bodies", H5P_DEFAULT) > 0) {
+    Hid bodies = open_group(g.get(), "bodies");
+    for (const auto& name : child_names(bodies.get())) {
+      r.bodies.push_back(read_body(bodies.get(), name));
+    }
+  } else {
+    internal::hdf5_last_error();
+    if (r.status != RunStatus::unsupported) {
+      throw Hdf5Error(object + "/bodies", "group is missing (required unless unsupported)");
+    }
+  }
+
+  const auto contacts = internal::read_table<ContactRecord>(g.get(), "contacts", contact_layout());
+  r.contacts.reserve(contacts.size());
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const ContactRecord& row = contacts[i];
+    ContactRow c;
+    c.time_s = row.time_s;
+    c.sample.body_a = body_index(row.body_a, r.body_names, object + "/contacts", i);
+    c.sample.body_b = body_index(row.body_b, r.body_names, object + "/contacts", i);
+    c.sample.force_n = row.force_n;
+    c.sample.penetration_m = row.penetration_m;
+    c.sample.normal = Vec2(row.normal[0], row.normal[1]);
+    c.sample.point_m = Vec2(row.point_m[0], row.point_m[1]);
+    r.contacts.push_back(c);
+  }
+
+  const auto events = internal::read_table<EventRecord>(g.get(), "events", event_layout());
+  r.events.reserve(events.size());
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    const EventRecord& row = events[i];
+    ContactEpisode e;
+    e.body_a = body_index(row.body_a, r.body_names, object + "/events", i);
+    e.body_b = body_index(row.body_b, r.body_names, object + "/events", i);
+    e.onset_time_s = row.onset_time_s;
+    e.offset_time_s = row.offset_time_s;
+    e.approach_speed_mps = row.approach_speed_mps;
+    e.separation_speed_mps = row.separation_speed_mps;
+    e.restitution = row.restitution;
+    e.peak_force_n = row.peak_force_n;
+    e.impulse_ns = row.impulse_ns;
+    e.max_penetration_m = row.max_penetration_m;
+    r.events.push_back(e);
+  }
+  return r;
+}
+
+CaseRuns read_case(hid_t runs, const std::string& name) {
+  Hid g = open_group(runs, name);
+  CaseRuns c;
+  c.case_name = name;
+  c.case_text = internal::read_string_attribute(g.get(), "case_text");
+  c.case_path = internal::read_string_attribute(g.get(), "case_path");
+  // the stored digest guards against a case text damaged or edited in the file
+  const std::string sha = internal::read_string_attribute(g.get(), "case_sha256");
+  if (sha != internal::sha256_hex(c.case_text)) {
+    throw Hdf5Error(internal::object_path(g.get()), "case_sha256 does not match case_text");
+  }
+  const auto overrides = parse_json_attribute<nlohmann::ordered_json>(g.get(), "overrides");
+  if (!overrides.is_object()) {
+    throw Hdf5Error(internal::object_path(g.get()), "attribute 'overrides' is not a JSON object");
+  }
+  for (const auto& [key, value] : overrides.items()) {
+    c.overrides.emplace_back(key, value.is_string() ? value.get<std::string>() : value.dump());
+  }
+  for (const auto& engine : child_names(g.get())) c.runs.push_back(read_run(g.get(), name, engine));
+  return c;
+}
+
+ResultsFile read_file(hid_t file) {
+  ResultsFile results;
+  {
+    Hid h5md = open_group(file, "h5md", " (not a planarbench results file)");
+    std::vector<std::int32_t> version(2, 0);
+    internal::read_numbers(h5md.get(), "version", H5T_NATIVE_INT32, version.data(), 2);
+    if (version[0] != 1) {
+      throw Hdf5Error("/h5md",
+                      fmt::format("H5MD version {}.{} is not 1.x", version[0], version[1]));
+    }
+  }
+  {
+    Hid p = open_group(file, "parameters", " (not a planarbench results file)");
+    results.provenance.command_line = internal::read_string_attribute(p.get(), "command_line");
+    results.provenance.utc_time = internal::read_string_attribute(p.get(), "utc_time");
+    results.provenance.host = internal::read_string_attribute(p.get(), "host");
+  }
+  Hid runs = open_group(file, "runs", " (not a planarbench results file)");
+  for (const auto& name : child_names(runs.get())) {
+    results.cases.push_back(read_case(runs.get(), name));
+  }
+  return results;
+}
+
+}  // namespace
+
+void write_results_file(const fs::path& path, const ResultsFile& results) {
+  internal::QuietHdf5 quiet;
+  // the target directory must exist and be writable before anything is made
+  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) {
+    throw InputError("--out", 0, "", fmt::format("directory '{}' does not exist", dir.string()));
+  }
+  if (!fs::is_directory(dir, ec)) {
+    throw InputError("--out", 0, "", fmt::format("'{}' is not a directory", dir.string()));
+  }
+  if (::access(dir.c_str(), W_OK) != 0) {
+    throw InputError("--out", 0, "", fmt::format("directory '{}' is not writable", dir.string()));
+  }
+  if (path.filename().empty() || fs::is_directory(path, ec)) {
+    throw InputError("--out", 0, "", fmt::format("'{}' is a directory, not a file", path.string()));
+  }
+
+  // write a temporary file beside the target, flush it, then rename over the
+  // target: readers see the old file or the complete new one, never a part
+  const fs::path tmp =
+      dir / fmt::format(".{}.tmp.{}", path.filename().string(), static_cast<long>(::getpid()));
+  try {
+    write_file(tmp, results);
+    fsync_path(tmp, O_RDONLY);
+    fs::rename(tmp, path);
+  } catch (const Hdf5Error& e) {
+    fs::remove(tmp, ec);
+    throw std::runtime_error(fmt::format("{}: cannot write results: {}", path.string(), e.what()));
+  } catch (...) {
+    fs::remove(tmp, ec);
+    throw;
+  }
+  // make the rename itself durable; the file is complete either way
+  try {
+    fsync_path(dir, O_RDONLY | O_DIRECTORY);
+  } catch (const std::system_error&) {
+  }
+}
+
+ResultsFile read_results_file(const fs::path& path) {
+  internal::QuietHdf5 quiet;
+  const std::string file = path.string();
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(file, 0, "", "does not exist");
+  if (fs::is_directory(path, ec)) throw InputError(file, 0, "", "is a directory, not a file");
+  if (H5Fis_hdf5(file.c_str()) <= 0) {
+    internal::hdf5_last_error();
+    throw InputError(file, 0, "", "is not an HDF5 file");
+  }
+  try {
+    Hid f = internal::owned_file(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "/",
+                                 "cannot be opened: truncated or damaged HDF5 file");
+    ResultsFile results = read_file(f.get());
+    f.close("/");
+    return results;
+  } catch (const Hdf5Error& e) {
+    throw InputError(file, 0, e.object(), e.what_is_wrong());
+  }
+}
+
+}  // namespace pb

@@ -1,0 +1,113 @@
+#include "planarbench/runner.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "planarbench/errors.hpp"
+
+namespace pb {
+
+namespace {
+
+bool finite_state(const BodyState& s) {
+  return std::isfinite(s.position_m.x()) && std::isfinite(s.position_m.y()) &&
+         std::isfinite(s.angle_rad) && std::isfinite(s.velocity_mps.x()) &&
+         std::isfinite(s.velocity_mps.y()) && std::isfinite(s.angular_velocity_radps);
+}
+
+// angles are stored continuous: remove 2 pi jumps an engine's wrapping adds
+double unwrapped(double previous, double angle) {
+  constexpr double two_pi = 2.0 * std::numbers::pi;
+  return angle - two_pi * std::round((angle - previous) / two_pi);
+}
+
+}  // namespace
+
+RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& engine_overrides,
+                     const RunOptions& options) {
+  RunResult r;
+  r.case_name = c.name;
+  r.engine_name = engine.name();
+  r.engine_version = engine.version();
+  for (const auto& b : c.bodies) r.body_names.push_back(b.name);
+
+  // settings are validated even when the engine cannot run the case
+  engine.settings().apply(engine_overrides);
+  r.settings = engine.settings().to_json();
+
+  const Capability cap = engine.supports(c);
+  if (cap.support == Support::unsupported) {
+    r.status = RunStatus::unsupported;
+    r.reason = cap.reason;
+    return r;
+  }
+  if (cap.support == Support::mapped) r.reason = cap.reason;
+
+  const int n = c.output_samples();
+  std::vector<int> moving;
+  for (std::size_t i = 0; i < c.bodies.size(); ++i) {
+    if (c.bodies[i].fixed) continue;
+    moving.push_back(static_cast<int>(i));
+    BodyTrajectory tr;
+    tr.name = c.bodies[i].name;
+    tr.time_s.reserve(static_cast<std::size_t>(n));
+    tr.position_m.reserve(static_cast<std::size_t>(n));
+    tr.angle_rad.reserve(static_cast<std::size_t>(n));
+    tr.velocity_mps.reserve(static_cast<std::size_t>(n));
+    tr.angular_velocity_radps.reserve(static_cast<std::size_t>(n));
+    r.bodies.push_back(std::move(tr));
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<BodyState> states;
+  std::vector<ContactSample> contacts;
+  int reported_percent = -1;
+  try {
+    engine.build(c, engine_overrides);
+    r.settings = engine.settings().to_json();
+    for (int k = 0; k < n; ++k) {
+      if (k > 0) engine.advance_to(c.output_time(k));
+      const double t = engine.time();
+      engine.body_states(states);
+      for (std::size_t j = 0; j < moving.size(); ++j) {
+        const BodyState& s = states.at(static_cast<std::size_t>(moving[j]));
+        if (!finite_state(s)) {
+          throw EngineError(fmt::format("non-finite state of body '{}' at t = {:.9g} s",
+                                        c.bodies[static_cast<std::size_t>(moving[j])].name, t));
+        }
+        BodyTrajectory& tr = r.bodies[j];
+        tr.time_s.push_back(t);
+        tr.position_m.push_back(s.position_m);
+        tr.angle_rad.push_back(tr.angle_rad.empty() ? s.angle_rad
+                                                    : unwrapped(tr.angle_rad.back(), s.angle_rad));
+        tr.velocity_mps.push_back(s.velocity_mps);
+        tr.angular_velocity_radps.push_back(s.angular_velocity_radps);
+      }
+      engine.contacts(contacts);
+      for (const auto& cs : contacts) r.contacts.push_back(ContactRow{t, cs});
+      if (options.progress) {
+        const int percent = static_cast<int>(100.0 * k / std::max(1, n - 1));
+        if (percent != reported_percent) {
+          reported_percent = percent;
+          options.progress(static_cast<double>(k) / std::max(1, n - 1));
+        }
+      }
+    }
+  } catch (const EngineError& e) {
+    r.status = RunStatus::diverged;
+    r.reason = e.what();
+    r.diverged_at_s = engine.time();
+  }
+  r.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.mapping = engine.mapping();
+  r.extra = engine.extra_attributes();
+  r.events = engine.episodes();
+  r.steps = engine.steps();
+  return r;
+}
+
+}  // namespace pb

@@ -1,0 +1,53 @@
+// The comparison metrics of SPEC §4: one run against a baseline (the truth,
+// the reference solver, or another engine) on one time grid.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "planarbench/case.hpp"
+#include "planarbench/run_result.hpp"
+
+namespace pb {
+
+// One metric value. `actual` is the run's quantity and `desired` the
+// baseline's (numpy assert_allclose semantics: |actual - desired| <= atol +
+// rtol |desired|); for error metrics (position_max ...) desired is 0 and
+// actual is the error itself. `error` is what a report shows.
+struct MetricValue {
+  std::string case_name;
+  std::string engine;
+  std::string against;   // "truth", "reference" or an engine name; "self" for energy etc.
+  std::string metric;    // SPEC §4 name
+  int episode = -1;      // contact episode index for per-episode metrics, -1 otherwise
+  double actual = 0.0;
+  double desired = 0.0;
+  double error = 0.0;    // abs error, or relative error for relative metrics
+  std::string unit;      // of `error`
+  std::string note;      // e.g. "episode missing in run", "compared up to t = 0.4965 s"
+};
+
+// The metrics of `run` against `baseline`, both runs of case `c`. Trajectories:
+// the run's samples, deduplicated by time (an engine with a step coarser than
+// the grid repeats its last state), are linearly interpolated onto the
+// baseline's sample times inside the run's time span; samples of the baseline
+// after `valid_until_s` are left out. Episodes are matched in order per body
+// pair; a missing or extra episode is reported as metric "episode_count".
+[[nodiscard]] std::vector<MetricValue> compare_runs(const Case& c, const RunResult& run,
+                                                    const RunResult& baseline,
+                                                    const std::string& against,
+                                                    double valid_until_s);
+
+// Metrics of a run on its own: energy_drift (max change of total mechanical
+// energy over each contact-free stretch, relative to the run's energy scale
+// m g (y_max - y_min) + max kinetic energy), constraint_drift (max distance
+// between each revolute joint's anchor on the body and its world pivot),
+// wall_per_sim_s.
+[[nodiscard]] std::vector<MetricValue> self_metrics(const Case& c, const RunResult& run);
+
+// Every metric of a case: each engine against the truth (analytic where the
+// case has one, valid up to its valid_until_s; otherwise the reference), each
+// engine against the reference, every pair of engines, and self metrics.
+[[nodiscard]] std::vector<MetricValue> case_metrics(const Case& c, const CaseRuns& runs);
+
+}  // namespace pb

@@ -1,0 +1,42 @@
+// The report (SPEC §6): `planarbench report results.h5 --out DIR` writes
+// DIR/report.html (self-contained, zoomable figures with uPlot inlined, data
+// embedded), DIR/report.md and DIR/figures/*.svg (static figures): the paper's
+// figures with the truth and every engine overlaid, every metric with its
+// pass/fail against a thresholds file, the parameter mapping of each engine,
+// the capability matrix, timings and provenance.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+
+namespace pb {
+
+struct ReportOptions {
+  std::filesystem::path results;     // results file written by `planarbench run`
+  std::filesystem::path out_dir;     // created when missing
+  std::filesystem::path thresholds;  // empty: no pass/fail column
+  // folder with report_template.html, report.js, report.css and
+  // node_modules/uplot; empty: $PLANARBENCH_WEB_DIR, else the source tree's
+  // reports/web
+  std::filesystem::path web_dir;
+  std::size_t max_points_outside_contact = 5000;  // per series, in the page
+};
+
+struct ReportSummary {
+  std::filesystem::path html;      // DIR/report.html
+  std::filesystem::path markdown;  // DIR/report.md
+  std::size_t figures = 0;         // figures in the page
+  std::size_t svg_files = 0;       // files in DIR/figures
+  std::size_t metrics = 0;         // metric rows
+  std::size_t checks = 0;          // checked (threshold, metric) pairs
+  std::size_t checks_failed = 0;
+};
+
+// Writes the report. Throws InputError (exit 2) for a missing or foreign
+// results file, a bad thresholds file, missing web assets (the message says
+// to run scripts/setup_web.sh) or an output folder that cannot be written.
+// Every file is written to a temporary name and renamed.
+ReportSummary write_report(const ReportOptions& options);
+
+}  // namespace pb

@@ -1,0 +1,125 @@
+#include "planarbench/reports/report.hpp"
+
+#include <fmt/format.h>
+
+#include "planarbench/case_loader.hpp"
+#include "planarbench/errors.hpp"
+#include "planarbench/reports/metrics.hpp"
+#include "planarbench/reports/thresholds.hpp"
+#include "planarbench/results_file.hpp"
+#include "report_figures.hpp"
+#include "report_files.hpp"
+#include "report_html.hpp"
+#include "report_mapping.hpp"
+#include "report_markdown.hpp"
+#include "report_provenance.hpp"
+#include "report_svg.hpp"
+#include "report_tables.hpp"
+#include "report_web_assets.hpp"
+
+namespace pb {
+
+namespace fs = std::filesystem;
+using internal::Report;
+
+namespace {
+
+// the case a run was made of: its file text with the --set case keys applied
+Case case_of(const CaseRuns& cr) {
+  SettingsOverrides case_keys;
+  for (const auto& [key, value] : cr.overrides) {
+    if (is_case_key(key)) case_keys.set(key, value, SettingSource{"--set", 0});
+  }
+  return parse_case(cr.case_text, cr.case_path, cr.case_name, case_keys);
+}
+
+internal::CaseSection case_section(const Case& c, const CaseRuns& cr,
+                                   const internal::FigureLimits& limits) {
+  internal::CaseSection s;
+  s.name = c.name;
+  s.description = c.description;
+  s.paper = c.paper;
+  s.truth = truth_kind_name(c.truth);
+  s.assumptions = c.assumptions;
+  s.overrides = cr.overrides;
+  s.figures = internal::case_figures(c, cr, limits);
+  return s;
+}
+
+}  // namespace
+
+ReportSummary write_report(const ReportOptions& options) {
+  // web assets first: without them there is no page, and no reason to compute
+  const auto assets = internal::load_web_assets(internal::web_dir(options.web_dir));
+  const ResultsFile results = read_results_file(options.results);
+  const auto provenance = internal::read_file_provenance(options.results);
+  const auto thresholds =
+      options.thresholds.empty() ? std::vector<Threshold>{} : load_thresholds(options.thresholds);
+
+  Report report;
+  report.results_file = options.results.string();
+  report.thresholds_file = options.thresholds.string();
+  report.provenance = provenance.parameters;
+  internal::FigureLimits limits;
+  limits.max_outside = options.max_points_outside_contact;
+  report.downsampling_note = fmt::format(
+      "Series are down-sampled for embedding: every sample inside a contact window (each "
+      "episode of any run, padded by two output intervals) is kept, at most {} evenly spaced "
+      "samples per series outside them. The results file has every sample.",
+      limits.max_outside);
+
+  // per case: the case model, its figures, its metrics
+  std::vector<Case> cases;
+  std::vector<MetricValue> metrics;
+  for (const auto& cr : results.cases) {
+    cases.push_back(case_of(cr));
+    report.cases.push_back(case_section(cases.back(), cr, limits));
+    auto m = case_metrics(cases.back(), cr);
+    metrics.insert(metrics.end(), m.begin(), m.end());
+    for (const auto* r : internal::runs_in_report_order(cr)) {
+      report.mappings.push_back(internal::MappingEntry{cr.case_name, r->engine_name,
+                                                       run_status_name(r->status), r->mapping,
+                                                       internal::not_expressed(r->mapping)});
+    }
+  }
+  const auto outcomes = check_thresholds(thresholds, metrics);
+  std::size_t failed = 0;
+  for (const auto& o : outcomes) failed += o.passed ? 0 : 1;
+  if (!options.thresholds.empty()) {
+    report.check_summary = fmt::format("{} of {} checks passed, {} failed",
+                                       outcomes.size() - failed, outcomes.size(), failed);
+  }
+
+  report.tables.push_back(internal::capability_table(results));
+  report.tables.push_back(internal::timings_table(results, cases));
+  report.tables.push_back(internal::metrics_table(metrics, outcomes, !options.thresholds.empty()));
+  if (!options.thresholds.empty()) {
+    report.tables.push_back(internal::unmatched_thresholds_table(outcomes));
+  }
+  report.tables.push_back(internal::provenance_table(provenance, results));
+
+  // the files: figures first, the pages that reference them last
+  internal::ensure_directory(options.out_dir);
+  internal::ensure_directory(options.out_dir / "figures");
+  ReportSummary summary;
+  for (const auto& c : report.cases) {
+    for (const auto& f : c.figures) {
+      ++summary.figures;
+      for (const auto& v : internal::figure_views(f)) {
+        internal::write_text_atomically(options.out_dir / v.file,
+                                        internal::figure_svg(f, v.t0_s, v.t1_s, v.title));
+        ++summary.svg_files;
+      }
+    }
+  }
+  summary.markdown = options.out_dir / "report.md";
+  internal::write_text_atomically(summary.markdown, internal::report_markdown(report));
+  summary.html = options.out_dir / "report.html";
+  internal::write_text_atomically(summary.html, internal::report_html(report, assets));
+  summary.metrics = metrics.size();
+  summary.checks = outcomes.size();
+  summary.checks_failed = failed;
+  return summary;
+}
+
+}  // namespace pb

@@ -1,0 +1,154 @@
+#include "report_markdown.hpp"
+
+#include <fmt/format.h>
+
+#include "report_mapping.hpp"
+
+namespace pb::internal {
+
+namespace {
+
+std::string cell(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char ch : text) {
+    if (ch == '|') {
+      out += "\\|";
+    } else if (ch == '\n' || ch == '\r') {
+      out += ' ';
+    } else {
+      out += ch;
+    }
+  }
+  return out;
+}
+
+// a GitHub anchor for a heading: lower case, spaces to '-', punctuation dropped
+std::string anchor(const std::string& heading) {
+  std::string out;
+  for (const char ch : heading) {
+    if ((ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_' || ch == '-') {
+      out += ch;
+    } else if (ch >= 'A' && ch <= 'Z') {
+      out += static_cast<char>(ch - 'A' + 'a');
+    } else if (ch == ' ') {
+      out += '-';
+    }
+  }
+  return out;
+}
+
+void section_table(std::string& md, const Table& t) {
+  md += "## " + t.title + "\n\n";
+  if (!t.note.empty()) md += t.note + "\n\n";
+  md += t.rows.empty() ? "(none)\n\n" : markdown_table(t) + "\n";
+}
+
+}  // namespace
+
+std::vector<FigureView> figure_views(const Figure& f) {
+  std::vector<FigureView> views;
+  views.push_back(FigureView{"figures/" + f.id + ".svg", f.title, 0.0, f.t_end_s});
+  if (f.quantity == Quantity::force && !f.episodes.empty()) {
+    const auto& e = f.episodes.front();
+    views.push_back(FigureView{
+        "figures/" + f.id + "_episode1.svg",
+        f.title + fmt::format(" (zoom: episode 1, t = {:.4g} to {:.4g} s)", e.t0_s, e.t1_s), e.t0_s,
+        e.t1_s});
+  }
+  return views;
+}
+
+std::string markdown_table(const Table& t) {
+  // appends only: GCC 12 at -O3 warns falsely (-Wrestrict) on "literal" + string
+  std::string md = "|";
+  for (const auto& c : t.columns) md.append(" ").append(cell(c)).append(" |");
+  md.append("\n|");
+  for (std::size_t i = 0; i < t.columns.size(); ++i) md.append("---|");
+  md.append("\n");
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    // a failed check stands out in plain text too
+    const bool failed = r < t.row_status.size() && t.row_status[r] == "fail";
+    md.append("|");
+    for (std::size_t i = 0; i < t.columns.size(); ++i) {
+      const std::string text = i < t.rows[r].size() ? cell(t.rows[r][i]) : "";
+      const char* mark = (i == 0 && failed) ? "**" : "";
+      md.append(" ").append(mark).append(text).append(mark).append(" |");
+    }
+    md.append("\n");
+  }
+  return md;
+}
+
+std::string report_markdown(const Report& report) {
+  std::string md = "# planarbench report\n\n";
+  md += fmt::format("Results file: `{}`", report.results_file);
+  if (!report.thresholds_file.empty()) {
+    md += fmt::format("; thresholds: `{}`", report.thresholds_file);
+  }
+  md += ".\n\n";
+  if (!report.check_summary.empty()) md += "**Check:** " + report.check_summary + "\n\n";
+  md +=
+      "The interactive page `report.html` (same folder) has zoomable figures; here they are "
+      "static SVG files in `figures/`, each series min-max decimated to the plot's pixel "
+      "columns so that peaks survive.\n\n";
+
+  // contents
+  md += "Contents:\n";
+  for (const auto& c : report.cases) md += fmt::format("- [{}](#{})\n", c.name, anchor(c.name));
+  for (const auto& t : report.tables) md += fmt::format("- [{}](#{})\n", t.title, anchor(t.title));
+  md += "- [Parameter mapping](#parameter-mapping)\n\n";
+
+  for (const auto& c : report.cases) {
+    md += "## " + c.name + "\n\n" + c.description + "\n\n";
+    if (!c.paper.empty()) md += "Paper: " + c.paper + ". ";
+    md += "Truth: " + c.truth + ".\n\n";
+    if (!c.overrides.empty()) {
+      md += "Overrides (`--set`):";
+      for (const auto& [k, v] : c.overrides) md += fmt::format(" `{}={}`", k, v);
+      md += "\n\n";
+    }
+    if (!c.assumptions.empty()) {
+      md += "Assumptions:\n";
+      for (const auto& a : c.assumptions) md += "- " + a + "\n";
+      md += "\n";
+    }
+    for (const auto& f : c.figures) {
+      for (const auto& v : figure_views(f)) md += fmt::format("![{}]({})\n\n", v.title, v.file);
+      std::string notes;
+      for (const auto& s : f.series) {
+        if (!s.note.empty())
+          notes += fmt::format("{}{}: {}", notes.empty() ? "" : "; ", s.engine, s.note);
+      }
+      if (!notes.empty()) md.append("Notes: ").append(notes).append(".\n\n");
+    }
+    if (c.figures.empty() || c.figures.front().series.empty()) {
+      md += "(no run of this case is ok: nothing to plot)\n\n";
+    }
+  }
+
+  for (const auto& t : report.tables) section_table(md, t);
+
+  md +=
+      "## Parameter mapping\n\nHow each engine expressed each case's contact law, and what it "
+      "could not express (each adapter's `mapping` attribute).\n\n";
+  for (const auto& m : report.mappings) {
+    md += fmt::format("### {} / {} ({})\n\n", m.case_name, m.engine, m.status);
+    if (m.not_expressed.empty()) {
+      md += "Could not express: nothing recorded.\n\n";
+    } else {
+      md += "Could not express:\n";
+      for (const auto& n : m.not_expressed) md += "- " + cell(n) + "\n";
+      md += "\n";
+    }
+    const auto flat = flatten_mapping(m.mapping);
+    if (!flat.empty() && !(flat.size() == 1 && flat.front().second == "{}")) {
+      md += "<details><summary>full mapping</summary>\n\n| key | value |\n|---|---|\n";
+      for (const auto& [k, v] : flat) md += "| " + cell(k) + " | " + cell(v) + " |\n";
+      md += "\n</details>\n\n";
+    }
+  }
+  return md;
+}
+
+}  // namespace pb::internal

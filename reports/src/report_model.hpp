@@ -1,0 +1,91 @@
+// The content of a report (SPEC §6), independent of how it is rendered: the
+// HTML page, the Markdown file and the SVG figures all read this.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pb::internal {
+
+// what a figure plots against time
+enum class Quantity { force, x, y, vx, vy };
+
+// one plotted line: one engine's quantity over time, already down-sampled
+struct PlotSeries {
+  std::string engine;
+  std::vector<double> time_s;   // s
+  std::vector<double> value;    // in the figure's unit (N, m or m/s)
+  std::size_t full_points = 0;  // samples before down-sampling
+  std::string note;             // e.g. "truth valid until t = 0.4965 s"
+  double peak = 0.0;            // largest finite value, in the figure's unit
+  bool off_scale = false;       // beyond the figure's y_clip
+};
+
+// a time window a figure can zoom to: one contact episode
+struct ZoomWindow {
+  std::string label;  // "episode 1"
+  double t0_s = 0.0;  // s
+  double t1_s = 0.0;  // s
+};
+
+struct Figure {
+  std::string id;  // unique in the report and file-name safe, e.g. "falling_ball_fig5"
+  std::string case_name;
+  std::string title;         // e.g. "Fig. 5 Contact force"
+  std::string paper_figure;  // "Fig. 5", or "" for a figure the paper does not have
+  std::string y_label;       // with unit, e.g. "contact force, N"
+  Quantity quantity = Quantity::x;
+  double t_end_s = 0.0;  // s, end of the case's time axis
+  std::vector<PlotSeries> series;
+  std::vector<ZoomWindow> episodes;
+  // Default upper end of the value axis when some series is far off the
+  // others' scale (an impulsive engine's force = impulse / step); NaN: fit all.
+  double y_clip = std::numeric_limits<double>::quiet_NaN();
+};
+
+// A table shared by the HTML and Markdown renderings: cells are text, and
+// each row may carry a status ("pass", "fail" or "") that colours it.
+struct Table {
+  std::string id;
+  std::string title;
+  std::string note;
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> row_status;  // one per row
+};
+
+// how one engine expressed one case's contact law (SPEC §5 `mapping`)
+struct MappingEntry {
+  std::string case_name;
+  std::string engine;
+  std::string status;  // ok | diverged | unsupported
+  nlohmann::json mapping;
+  std::vector<std::string> not_expressed;  // what the engine could not express
+};
+
+struct CaseSection {
+  std::string name;
+  std::string description;
+  std::string paper;
+  std::string truth;
+  std::vector<std::string> assumptions;
+  std::vector<std::pair<std::string, std::string>> overrides;  // --set given
+  std::vector<Figure> figures;
+};
+
+struct Report {
+  std::string results_file;                                     // as given on the command line
+  std::string thresholds_file;                                  // "" when none
+  std::string check_summary;                                    // "12 of 14 checks passed" or ""
+  std::vector<std::pair<std::string, std::string>> provenance;  // key, value
+  std::string downsampling_note;
+  std::vector<CaseSection> cases;
+  std::vector<Table> tables;  // capability, timings, metrics, checks, provenance
+  std::vector<MappingEntry> mappings;
+};
+
+}  // namespace pb::internal

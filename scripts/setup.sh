@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package planarbench needs to build, test and report.
+# Idempotent: apt-get skips what is already installed. Run as root or with sudo.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake ninja-build pkg-config git
+  libeigen3-dev
+  libmujoco-dev libqhull-dev   # mujocoConfig.cmake names /usr/include/libqhull_r
+  libbox2d-dev
+  libode-dev
+  libhdf5-dev hdf5-tools
+  libbenchmark-dev
+  libgtest-dev libgmock-dev
+  libcli11-dev
+  libtomlplusplus-dev
+  nlohmann-json3-dev
+  libfmt-dev
+  python3-h5py python3-numpy
+)
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ "${#missing[@]}" -eq 0 ]; then
+  echo "setup: all ${#PACKAGES[@]} packages already installed"
+  exit 0
+fi
+
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

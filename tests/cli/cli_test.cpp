@@ -1,0 +1,213 @@
+// Tests for apps/ (the planarbench command line), run as a user runs it:
+// the real binary, its exit codes (SPEC §5), its messages and its files.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+// runs a shell command line, capturing both streams
+Outcome run(const std::string& args) {
+  const std::string cmd = std::string(PB_EXE) + " " + args + " 2>&1";
+  Outcome o;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (p == nullptr) return o;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), buf.size(), p) != nullptr) o.output += buf.data();
+  const int status = pclose(p);
+  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return o;
+}
+
+fs::path work_dir() {
+  fs::create_directories(PB_WORK_DIR);
+  return PB_WORK_DIR;
+}
+
+bool contains(const std::string& haystack, const std::string& needle) {
+  return haystack.find(needle) != std::string::npos;
+}
+
+TEST(Cli, HelpTellsEverySubcommandAndExitsZero) {
+  const auto o = run("--help");
+  EXPECT_EQ(o.exit_code, 0);
+  EXPECT_TRUE(contains(o.output, "list")) << o.output;
+  EXPECT_TRUE(contains(o.output, "run")) << o.output;
+  const auto r = run("run --help");
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* opt : {"--case", "--engine", "--out", "--set", "--jobs"}) {
+    EXPECT_TRUE(contains(r.output, opt)) << opt;
+  }
+}
+
+TEST(Cli, MissingSubcommandOrOptionIsBadUsage) {
+  EXPECT_EQ(run("").exit_code, 2);
+  EXPECT_EQ(run("run --case falling_ball").exit_code, 2);
+  EXPECT_EQ(run("frobnicate").exit_code, 2);
+}
+
+TEST(Cli, ListShowsCasesEnginesAndSupport) {
+  const auto o = run("list --settings");
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  for (const char* word : {"falling_ball", "dual_pendulum", "sliding", "analytic", "reference",
+                           "mujoco", "box2d", "ode", "native"}) {
+    EXPECT_TRUE(contains(o.output, word)) << word << "\n" << o.output;
+  }
+}
+
+TEST(Cli, UnknownEngineNamesTheAllowedOnes) {
+  const auto out = work_dir() / "unknown_engine.h5";
+  const auto o = run("run --case falling_ball --engine havok --out " + out.string());
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_TRUE(contains(o.output, "havok")) << o.output;
+  EXPECT_TRUE(contains(o.output, "mujoco")) << o.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Cli, UnknownCaseNamesTheAvailableOnes) {
+  const auto out = work_dir() / "unknown_case.h5";
+  const auto o = run("run --case falling_bal --engine analytic --out " + out.string());
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_TRUE(contains(o.output, "falling_ball")) << o.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Cli, UnknownSetKeySuggestsTheClosestKey) {
+  const auto out = work_dir() / "unknown_key.h5";
+  const auto o = run("run --case falling_ball --engine analytic --set duratoin=1 --out " +
+                     out.string());
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_TRUE(contains(o.output, "duratoin")) << o.output;
+  EXPECT_TRUE(contains(o.output, "did you mean 'duration'")) << o.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Cli, OutOfRangeCaseOverrideIsBadInputNamingSet) {
+  const auto out = work_dir() / "bad_value.h5";
+  const auto o = run("run --case falling_ball --engine analytic --set duration=-1 --out " +
+                     out.string());
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_TRUE(contains(o.output, "--set")) << o.output;
+  EXPECT_TRUE(contains(o.output, "duration")) << o.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Cli, MissingOutputDirectoryIsBadInputAndWritesNothing) {
+  const auto dir = work_dir() / "no_such_dir";
+  fs::remove_all(dir);
+  const auto o = run("run --case falling_ball --engine analytic --quiet --out " +
+                     (dir / "r.h5").string());
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_TRUE(contains(o.output, "no_such_dir")) << o.output;
+  EXPECT_FALSE(fs::exists(dir));
+}
+
+// The falling ball's analytic events must read back from the file with h5py
+// alone (tests/python/check_falling_ball.py asserts SPEC §2's figures).
+TEST(Cli, AnalyticFallingBallWritesAFileH5pyReads) {
+  const auto out = work_dir() / "falling_ball_analytic.h5";
+  fs::remove(out);
+  const auto o = run("run --case falling_ball --engine analytic --out " + out.string());
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  ASSERT_TRUE(fs::exists(out));
+  const std::string py = std::string(PB_PYTHON) + " " + PB_SOURCE_DIR +
+                         "/tests/python/check_falling_ball.py " + out.string() + " 2>&1";
+  FILE* p = popen(py.c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  std::string text;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), buf.size(), p) != nullptr) text += buf.data();
+  const int status = pclose(p);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << text;
+}
+
+// The README's h5py snippet, run verbatim on a file the command line wrote.
+TEST(Cli, ReadmeSnippetReadsTheResults) {
+  const auto dir = work_dir() / "readme";
+  fs::create_directories(dir);
+  const auto out = dir / "r.h5";
+  ASSERT_EQ(run("run --case falling_ball --engine analytic --quiet --out " + out.string()).exit_code,
+            0);
+  const std::string py = std::string(PB_PYTHON) + " " + PB_SOURCE_DIR +
+                         "/tests/python/run_readme_snippet.py " + PB_SOURCE_DIR + "/README.md " +
+                         out.string() + " > " + (dir / "snippet.txt").string() + " 2>&1";
+  EXPECT_EQ(std::system(py.c_str()), 0);
+  std::ifstream f(dir / "snippet.txt");
+  const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  EXPECT_TRUE(contains(text, "ok")) << text;     // the run's status attribute
+  EXPECT_TRUE(contains(text, "0.725")) << text;  // the first onset, s
+}
+
+// --jobs 2 gives the same datasets as --jobs 1 (results land by task index).
+TEST(Cli, JobsDoNotChangeTheResults) {
+  const auto a = work_dir() / "jobs1.h5";
+  const auto b = work_dir() / "jobs2.h5";
+  ASSERT_EQ(run("run --case falling_ball,sliding --engine analytic --quiet --jobs 1 --out " +
+                a.string()).exit_code, 0);
+  ASSERT_EQ(run("run --case falling_ball,sliding --engine analytic --quiet --jobs 2 --out " +
+                b.string()).exit_code, 0);
+  const std::string py = std::string(PB_PYTHON) + " " + PB_SOURCE_DIR +
+                         "/tests/python/same_datasets.py " + a.string() + " " + b.string() +
+                         " 2>&1";
+  EXPECT_EQ(std::system(py.c_str()), 0);
+}
+
+// The CI gate: every case on every engine against the committed thresholds
+// (cases/thresholds.toml, each tolerance derived in its `why`). Fails when
+// any engine or the reference solver drifts out of tolerance.
+TEST(Gate, FullMatrixPassesTheCommittedThresholds) {
+  const auto out = work_dir() / "gate_all.h5";
+  const auto r = run("run --case all --engine all --jobs 2 --quiet --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
+                     "/cases/thresholds.toml " + out.string());
+  EXPECT_EQ(c.exit_code, 0) << c.output;
+  EXPECT_TRUE(contains(c.output, " 0 breached")) << c.output;
+  // the JUnit XML and the Markdown summary land beside the results
+  EXPECT_TRUE(fs::exists(work_dir() / "gate_all.junit.xml"));
+  EXPECT_TRUE(fs::exists(work_dir() / "gate_all.summary.md"));
+}
+
+// ODE's textbook ERP/CFM mapping adds h k of numerical damping: the
+// restitution leaves its 1 % band and check exits 1 naming the metric.
+TEST(Gate, OneEngineParameterChangeBreachesAndIsNamed) {
+  const auto out = work_dir() / "gate_textbook.h5";
+  const auto r = run("run --case falling_ball --engine analytic,ode --quiet "
+                     "--set ode.damping_mapping=textbook --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
+                     "/cases/thresholds.toml " + out.string());
+  EXPECT_EQ(c.exit_code, 1) << c.output;
+  EXPECT_TRUE(contains(c.output, "BREACH falling_ball.ode restitution vs truth")) << c.output;
+}
+
+TEST(Gate, BadThresholdsFileIsBadInput) {
+  const auto bad = work_dir() / "bad_thresholds.toml";
+  {
+    std::ofstream f(bad);
+    f << "[[threshold]]\ncase = \"falling_ball\"\nengine = \"ode\"\nagainst = \"truth\"\n"
+         "metric = \"restitutoin\"\natol = 1\nwhy = \"x\"\n";
+  }
+  const auto out = work_dir() / "gate_bad_thresholds.h5";
+  ASSERT_EQ(run("run --case falling_ball --engine analytic --quiet --out " + out.string()).exit_code,
+            0);
+  const auto c = run("check --thresholds " + bad.string() + " " + out.string());
+  EXPECT_EQ(c.exit_code, 2) << c.output;
+  EXPECT_TRUE(contains(c.output, "bad_thresholds.toml:5")) << c.output;
+  EXPECT_TRUE(contains(c.output, "restitutoin")) << c.output;
+}
+
+}  // namespace

@@ -1,0 +1,114 @@
+// Tests for core/reference/src/reference_engine.cpp: the engine interface.
+#include "planarbench/reference/reference_engine.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "planarbench/case_loader.hpp"
+#include "planarbench/errors.hpp"
+#include "planarbench/runner.hpp"
+
+namespace pb {
+namespace {
+
+Case load(const std::string& name) {
+  return load_case(std::string(PB_CASES_DIR) + "/" + name + ".toml");
+}
+
+SettingsOverrides with(std::initializer_list<std::pair<std::string, std::string>> kv) {
+  SettingsOverrides o;
+  for (const auto& [k, v] : kv) o.set(k, v, SettingSource{"test", 0});
+  return o;
+}
+
+TEST(ReferenceEngine, NameVersionSettings) {
+  auto e = make_reference_engine();
+  EXPECT_EQ(e->name(), "reference");
+  EXPECT_FALSE(e->version().empty());
+  EXPECT_TRUE(e->settings().knows("reference.geometry"));
+  EXPECT_TRUE(e->settings().knows("dt"));
+  EXPECT_EQ(e->settings().engine(), "reference");
+}
+
+TEST(ReferenceEngine, SupportsEveryShippedCaseNatively) {
+  for (const char* name : {"falling_ball", "dual_pendulum", "sliding", "falling_ball_paper",
+                           "sliding_paper"}) {
+    auto e = make_reference_engine();
+    const Capability cap = e->supports(load(name));
+    EXPECT_EQ(cap.support, Support::native) << name << ": " << cap.reason;
+  }
+}
+
+TEST(ReferenceEngine, ExactGeometryRefusesPairsWithoutARoutine) {
+  // two ellipses have no exact routine; outline points handle them
+  Case c = load("dual_pendulum");
+  c.bodies[1].shape = Ellipse{0.5, 0.3};
+  auto e = make_reference_engine();
+  EXPECT_EQ(e->supports(c).support, Support::native);
+  e->settings().apply(with({{"geometry", "exact"}}));
+  const Capability cap = e->supports(c);
+  EXPECT_EQ(cap.support, Support::unsupported);
+  EXPECT_NE(cap.reason.find("ellipse"), std::string::npos);
+  EXPECT_THROW(e->build(c, with({{"geometry", "exact"}})), EngineError);
+}
+
+TEST(ReferenceEngine, RunsThroughTheRunner) {
+  // the runner drives the engine onto the common grid; a short falling_ball
+  Case c = load("falling_ball");
+  c.duration_s = 0.8;
+  auto e = make_reference_engine();
+  const RunResult r = run_engine(*e, c, with({{"integrator", "paper"}, {"geometry", "exact"}}));
+  ASSERT_EQ(r.status, RunStatus::ok) << r.reason;
+  EXPECT_EQ(r.bodies.size(), 1u);  // the moving ball only
+  EXPECT_EQ(r.bodies[0].time_s.size(), static_cast<std::size_t>(c.output_samples()));
+  EXPECT_EQ(r.bodies[0].time_s.back(), c.output_time(c.output_samples() - 1));
+  ASSERT_EQ(r.events.size(), 1u);
+  EXPECT_FALSE(std::isnan(r.events[0].offset_time_s));
+  // contact rows exist during the impact only, with a unit normal a -> b
+  ASSERT_FALSE(r.contacts.empty());
+  // rows sit on the output grid (falling_ball: output_interval = 1e-4 s), so
+  // the first and last may lie up to one interval outside the episode; a unit
+  // normal to 1e-12 (rounding of a normalisation, 1e-16, with margin)
+  const double interval_s = 1e-4;  // cases/falling_ball.toml output_interval
+  for (const auto& row : r.contacts) {
+    EXPECT_GE(row.time_s, r.events[0].onset_time_s - interval_s);
+    EXPECT_LE(row.time_s, r.events[0].offset_time_s + interval_s);
+    EXPECT_NEAR(row.sample.normal.norm(), 1.0, 1e-12);
+    EXPECT_GE(row.sample.force_n, 0.0);
+  }
+  EXPECT_EQ(r.settings.at("integrator"), "paper");
+  EXPECT_EQ(r.mapping.at("contact_law").at("ground_ball"), "kelvin_voigt");
+  EXPECT_EQ(r.extra.at("integrator"), "paper");
+  EXPECT_EQ(r.extra.at("constraint_drift_m").get<double>(), 0.0);
+  EXPECT_GT(r.steps, 0);
+}
+
+TEST(ReferenceEngine, BodyStatesIncludeFixedBodies) {
+  auto e = make_reference_engine();
+  const Case c = load("sliding");
+  e->build(c, with({{"geometry", "exact"}}));
+  e->advance_to(0.01);
+  std::vector<BodyState> s;
+  e->body_states(s);
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].position_m, c.bodies[0].position_m);
+  EXPECT_EQ(s[0].angle_rad, c.bodies[0].angle_rad);  // a fixed body is copied, not integrated
+  std::vector<ContactSample> cs;
+  e->contacts(cs);
+  ASSERT_EQ(cs.size(), 1u);  // touching from t = 0
+  EXPECT_EQ(cs[0].body_a, 0);
+  EXPECT_EQ(cs[0].body_b, 1);
+  // an open episode has no offset yet
+  ASSERT_EQ(e->episodes().size(), 1u);
+  EXPECT_TRUE(std::isnan(e->episodes()[0].offset_time_s));
+}
+
+TEST(ReferenceEngine, AdvanceBeforeBuildIsAnEngineError) {
+  auto e = make_reference_engine();
+  EXPECT_THROW(e->advance_to(1.0), EngineError);
+}
+
+}  // namespace
+}  // namespace pb

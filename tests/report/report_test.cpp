@@ -1,0 +1,138 @@
+// Tests for reports/src/report.cpp
+//
+// End to end on a results file of synthetic falling_ball runs
+// (report_test_runs.hpp), with a stand-in web folder, so the C++ side is
+// tested without npm; tests/report/browser_test.mjs opens the real page.
+#include "planarbench/reports/report.hpp"
+
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include "planarbench/errors.hpp"
+#include "planarbench/results_file.hpp"
+#include "report_files.hpp"
+#include "report_test_runs.hpp"
+
+namespace pb {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ReportTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / "pb_report_test";
+    fs::remove_all(dir_);
+    internal::ensure_directory(dir_ / "web" / "node_modules" / "uplot" / "dist");
+    const fs::path u = dir_ / "web" / "node_modules" / "uplot";
+    internal::write_text_atomically(u / "dist" / "uPlot.iife.min.js", "var uPlot = {};");
+    internal::write_text_atomically(u / "dist" / "uPlot.min.css", ".uplot{}");
+    internal::write_text_atomically(u / "LICENSE", "The MIT License (MIT)");
+    internal::write_text_atomically(u / "package.json", R"({"version": "1.6.32"})");
+    internal::write_text_atomically(
+        dir_ / "web" / "report_template.html",
+        "<title>@@TITLE@@</title><style>@@UPLOT_CSS@@@@PAGE_CSS@@</style>"
+        "<script type=\"application/json\" id=\"pb-data\">@@DATA@@</script>"
+        "<script>/*! uPlot @@UPLOT_VERSION@@ @@UPLOT_LICENSE@@ */@@UPLOT_JS@@</script>"
+        "<script>@@PAGE_JS@@</script>");
+    internal::write_text_atomically(dir_ / "web" / "report.js", "var page = 1;");
+    internal::write_text_atomically(dir_ / "web" / "report.css", "body{}");
+
+    const Case c = test::falling_ball_case();
+    ResultsFile results;
+    results.provenance = {"planarbench run", "2026-01-01T00:00:00Z", "host"};
+    results.cases.push_back(test::falling_ball_runs(c));
+    write_results_file(dir_ / "r.h5", results);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  ReportOptions options(const std::string& out) const {
+    ReportOptions o;
+    o.results = dir_ / "r.h5";
+    o.out_dir = dir_ / out;
+    o.web_dir = dir_ / "web";
+    return o;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(ReportTest, WritesPageMarkdownAndFigures) {
+  const ReportSummary s = write_report(options("out"));
+  EXPECT_EQ(s.figures, 2u);    // Figs 5 and 6
+  EXPECT_EQ(s.svg_files, 3u);  // and Fig 5 zoomed on its episode
+  EXPECT_GT(s.metrics, 0u);
+  EXPECT_EQ(s.checks, 0u);
+  for (const char* f :
+       {"report.html", "report.md", "figures/falling_ball_fig5.svg",
+        "figures/falling_ball_fig5_episode1.svg", "figures/falling_ball_fig6.svg"}) {
+    EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / f)) << f;
+  }
+  const std::string html = internal::read_text_file(dir_ / "out" / "report.html");
+  EXPECT_EQ(html.find("@@"), std::string::npos);
+  EXPECT_NE(html.find("\"falling_ball_fig5\""), std::string::npos);
+  EXPECT_NE(html.find("uPlot 1.6.32 The MIT License (MIT)"), std::string::npos);
+  const std::string md = internal::read_text_file(dir_ / "out" / "report.md");
+  for (const char* heading : {"## Capability matrix", "## Timings", "## Metrics", "## Provenance",
+                              "## Parameter mapping"}) {
+    EXPECT_NE(md.find(heading), std::string::npos) << heading;
+  }
+  EXPECT_NE(md.find("mujoco cannot do X"), std::string::npos);  // from the mapping
+}
+
+TEST_F(ReportTest, SameInputSameBytes) {
+  (void)write_report(options("a"));
+  (void)write_report(options("b"));
+  for (const char* f : {"report.html", "report.md", "figures/falling_ball_fig5.svg"}) {
+    EXPECT_EQ(internal::read_text_file(dir_ / "a" / f), internal::read_text_file(dir_ / "b" / f))
+        << f;
+  }
+}
+
+TEST_F(ReportTest, ThresholdsAddPassFail) {
+  internal::write_text_atomically(dir_ / "t.toml", R"(
+[[threshold]]
+case = "falling_ball"
+engine = "mujoco"
+against = "truth"
+metric = "peak_force"
+rtol = 0.05
+why = "590 N against 580 N: 1.7 %"
+
+[[threshold]]
+case = "falling_ball"
+engine = "box2d"
+against = "truth"
+metric = "peak_force"
+rtol = 0.05
+why = "impulsive: fails"
+)");
+  ReportOptions o = options("out");
+  o.thresholds = dir_ / "t.toml";
+  const ReportSummary s = write_report(o);
+  EXPECT_EQ(s.checks, 2u);
+  EXPECT_EQ(s.checks_failed, 1u);
+  const std::string md = internal::read_text_file(dir_ / "out" / "report.md");
+  EXPECT_NE(md.find("**Check:** 1 of 2 checks passed, 1 failed"), std::string::npos);
+}
+
+TEST_F(ReportTest, BadInputIsAnInputError) {
+  ReportOptions o = options("out");
+  o.results = dir_ / "absent.h5";
+  EXPECT_THROW((void)write_report(o), InputError);
+  // an HDF5 file that is not a results file
+  const fs::path foreign = dir_ / "foreign.h5";
+  const hid_t f = H5Fcreate(foreign.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  H5Fclose(f);
+  o.results = foreign;
+  EXPECT_THROW((void)write_report(o), InputError);
+  // missing web assets
+  o = options("out");
+  o.web_dir = dir_ / "no_web";
+  EXPECT_THROW((void)write_report(o), InputError);
+  EXPECT_FALSE(fs::exists(dir_ / "out"));  // nothing written before the inputs are known good
+}
+
+}  // namespace
+}  // namespace pb
