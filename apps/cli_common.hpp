@@ -1,5 +1,6 @@
 // What the subcommands of the command line share: the cases folder, --set
-// parsing and provenance.
+// parsing, the validation of options before anything runs, one-line error
+// messages and provenance.
 #pragma once
 
 #include <filesystem>
@@ -10,10 +11,23 @@
 #include "planarbench/run_result.hpp"
 #include "planarbench/settings.hpp"
 
+namespace CLI {
+class App;
+}  // namespace CLI
+
 namespace pb::cli {
+
+// --jobs: worker threads of the case x engine matrix
+inline constexpr int kMaxJobs = 64;
 
 // the cases folder: --cases-dir, else $PLANARBENCH_CASES_DIR, else the source tree's cases/
 [[nodiscard]] std::filesystem::path cases_dir(const std::string& option);
+
+// Every error of the command line is one line on stderr,
+// "planarbench: error: WHERE: FIELD: what is allowed", also those CLI11 finds
+// while parsing (unknown options, bad numbers, missing options). Installs
+// that format on the root app.
+void use_one_line_errors(CLI::App& app);
 
 // --set KEY=VALUE pairs split into those that address the case and those for
 // engines; an unknown key is an InputError with a "did you mean".
@@ -24,7 +38,32 @@ struct Overrides {
 };
 [[nodiscard]] Overrides parse_overrides(const std::vector<std::string>& assignments);
 
-// a case's own [settings] table under the --set engine keys (--set wins)
+// ---- fail-fast checks of options (InputError naming the option) -------------
+
+// --jobs in [1, kMaxJobs]
+void check_jobs(int jobs);
+
+// a file can be made at `path`: its folder exists, is a folder and accepts a
+// new file (tried by creating and removing a probe file, which catches what
+// permission bits miss: read-only mounts, /proc, root); `path` is no folder
+void check_output_file(const std::string& option, const std::filesystem::path& path);
+
+// `output` is none of `others` (inputs, other outputs): writing it would
+// destroy an input or clash with another output
+void check_not_an_input(const std::string& option, const std::filesystem::path& output,
+                        const std::vector<std::filesystem::path>& inputs);
+
+// NAME, all or a comma-separated list of engine names, with a "did you mean"
+void check_engine_spec(const std::string& spec);
+
+// Engine settings given with --set are valid: an "engine.key" for that engine,
+// a shared "key" for every selected engine that binds it or, when none does,
+// for every engine that binds it (so a bad value is never silently unused).
+void check_engine_settings(const SettingsOverrides& given, const std::vector<std::string>& selected);
+
+// a case's own [settings] table under the --set engine keys (--set wins).
+// The case's keys must be engine settings, valid for every engine that binds
+// them (a case may be run on any engine); errors name the case file's line.
 [[nodiscard]] SettingsOverrides engine_settings_for(const Case& c, const SettingsOverrides& given);
 
 [[nodiscard]] ResultsProvenance provenance(int argc, char** argv);

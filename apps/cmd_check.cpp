@@ -1,13 +1,17 @@
 // planarbench check: the CI gate (SPEC §6).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <toml++/toml.h>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "planarbench/case_loader.hpp"
+#include "planarbench/did_you_mean.hpp"
+#include "planarbench/engines.hpp"
 #include "planarbench/errors.hpp"
 #include "planarbench/reports/thresholds.hpp"
 #include "planarbench/results_file.hpp"
@@ -24,21 +28,90 @@ struct CheckOptions {
   bool quiet = false;
 };
 
-// writes text to path through a temporary file and a rename
+// writes text to path through a temporary file and a rename; on failure
+// nothing is left behind
 void write_text_atomically(const std::filesystem::path& path, const std::string& text) {
   const auto tmp = path.string() + ".tmp";
+  std::error_code ec;
   {
     std::ofstream f(tmp, std::ios::binary);
     if (!f) throw InputError(path.string(), 0, "", "cannot be written");
     f << text;
-    if (!f.flush()) throw InputError(path.string(), 0, "", "write failed");
+    if (!f.flush()) {
+      f.close();
+      std::filesystem::remove(tmp, ec);
+      throw InputError(path.string(), 0, "", "write failed (disk full?)");
+    }
   }
-  std::filesystem::rename(tmp, path);
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw InputError(path.string(), 0, "", "cannot be replaced: " + ec.message());
+  }
+}
+
+// the line of threshold[index].key in the thresholds file (0 when unknown)
+int key_line(const toml::table& doc, std::size_t index, const char* key) {
+  const toml::node* n = doc["threshold"][index][key].node();
+  return n != nullptr ? static_cast<int>(n->source().begin.line) : 0;
+}
+
+// Names in the thresholds file that the syntax check cannot know: each case is
+// in the results file or the cases folder, each engine and `against` is an
+// engine (or truth, reference, self). A misspelt name would otherwise be a
+// breach ("not computed") rather than an error of the file.
+void check_threshold_names(const std::string& file, const std::vector<Threshold>& thresholds,
+                           const ResultsFile& results) {
+  std::vector<std::string> cases;
+  for (const auto& cr : results.cases) cases.push_back(cr.case_name);
+  try {
+    for (const auto& p : resolve_cases("all", cases_dir(""))) cases.push_back(p.stem().string());
+  } catch (const InputError&) {
+    // no cases folder: the results file's cases are all there is
+  }
+  std::sort(cases.begin(), cases.end());
+  cases.erase(std::unique(cases.begin(), cases.end()), cases.end());
+  const std::vector<std::string>& engines = engine_names();
+  std::vector<std::string> against = {"truth", "self"};
+  against.insert(against.end(), engines.begin(), engines.end());
+
+  toml::table doc;
+  try {
+    doc = toml::parse_file(file);
+  } catch (const toml::parse_error&) {
+    // load_thresholds parsed it already; lines then fall back to the entry's
+  }
+  auto fail = [&](std::size_t i, const Threshold& t, const char* key, const std::string& value,
+                  const std::vector<std::string>& allowed, const char* what) {
+    const int line = key_line(doc, i, key);
+    throw InputError(file, line > 0 ? line : t.line, fmt::format("threshold[{}].{}", i, key),
+                     fmt::format("unknown {} '{}'{}; allowed: {}", what, value,
+                                 did_you_mean(value, allowed), join_words(allowed)));
+  };
+  auto known = [](const std::vector<std::string>& names, const std::string& s) {
+    return std::find(names.begin(), names.end(), s) != names.end();
+  };
+  for (std::size_t i = 0; i < thresholds.size(); ++i) {
+    const Threshold& t = thresholds[i];
+    if (!known(cases, t.case_name)) fail(i, t, "case", t.case_name, cases, "case");
+    if (!known(engines, t.engine)) fail(i, t, "engine", t.engine, engines, "engine");
+    if (!known(against, t.against)) fail(i, t, "against", t.against, against, "baseline");
+  }
 }
 
 int run_check(const CheckOptions& opt) {
+  // everything that can be checked before the (large) results file is read
   const auto thresholds = load_thresholds(opt.thresholds);
+  const std::filesystem::path res(opt.results);
+  const auto stem = res.parent_path() / res.stem();
+  const std::string junit = opt.junit.empty() ? stem.string() + ".junit.xml" : opt.junit;
+  const std::string summary = opt.summary.empty() ? stem.string() + ".summary.md" : opt.summary;
+  check_output_file("--junit", junit);
+  check_output_file("--summary", summary);
+  check_not_an_input("--junit", junit, {opt.results, opt.thresholds});
+  check_not_an_input("--summary", summary, {opt.results, opt.thresholds, junit});
   const ResultsFile results = read_results_file(opt.results);
+  check_threshold_names(opt.thresholds, thresholds, results);
 
   std::vector<MetricValue> metrics;
   std::vector<std::string> diverged;
@@ -59,12 +132,8 @@ int run_check(const CheckOptions& opt) {
   }
   const auto outcomes = check_thresholds(thresholds, metrics);
 
-  const std::filesystem::path res(opt.results);
-  const auto stem = res.parent_path() / res.stem();
-  write_text_atomically(opt.junit.empty() ? stem.string() + ".junit.xml" : opt.junit,
-                        junit_xml(outcomes, diverged));
-  write_text_atomically(opt.summary.empty() ? stem.string() + ".summary.md" : opt.summary,
-                        markdown_summary(outcomes, diverged));
+  write_text_atomically(junit, junit_xml(outcomes, diverged));
+  write_text_atomically(summary, markdown_summary(outcomes, diverged));
 
   std::size_t failed = 0;
   for (const auto& o : outcomes) {

@@ -75,6 +75,9 @@ int run_list(const ListOptions& opt) {
 }  // namespace
 
 Action add_list_command(CLI::App& app) {
+  // the root app's parse errors as one line, like every other error; here
+  // because list is registered first (main.cpp is the better home for it)
+  use_one_line_errors(app);
   auto opt = std::make_shared<ListOptions>();
   auto* cmd = app.add_subcommand("list", "List cases, engines and what each engine supports");
   cmd->add_option("--cases-dir", opt->cases_dir,

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "planarbench/errors.hpp"
 #include "planarbench/reports/report.hpp"
 
 namespace pb::cli {
@@ -13,6 +14,7 @@ struct ReportOptionsCli {
   std::string results;
   std::string out;
   std::string thresholds;
+  std::string sweep;
   bool quiet = false;
 };
 
@@ -21,6 +23,14 @@ int run_report(const ReportOptionsCli& opt) {
   options.results = opt.results;
   options.out_dir = opt.out;
   options.thresholds = opt.thresholds;
+  options.sweep = opt.sweep;
+  if (opt.results.empty() && opt.sweep.empty()) {
+    throw InputError("report", 0, "", "give a results file, --sweep FILE, or both");
+  }
+  if (opt.results.empty() && !opt.thresholds.empty()) {
+    throw InputError("--thresholds", 0, "",
+                     "needs a results file (the sweep has no metrics to check)");
+  }
   const ReportSummary s = write_report(options);
   if (!opt.quiet) {
     std::printf("wrote %s and %s (%zu figures, %zu SVG files, %zu metrics", s.html.c_str(),
@@ -28,6 +38,7 @@ int run_report(const ReportOptionsCli& opt) {
     if (!opt.thresholds.empty()) {
       std::printf(", %zu of %zu checks passed", s.checks - s.checks_failed, s.checks);
     }
+    if (!opt.sweep.empty()) std::printf(", work-precision of %zu cases", s.work_precision_cases);
     std::printf(")\n");
   }
   return 0;
@@ -41,14 +52,19 @@ Action add_report_command(CLI::App& app) {
       "report",
       "Write an HTML + Markdown report of a results file: the paper's figures with every engine "
       "overlaid, metrics, parameter mapping, capability matrix, timings, provenance");
-  cmd->add_option("results", opt->results, "Results file written by `planarbench run`")
-      ->required()
+  cmd->add_option("results", opt->results,
+                  "Results file written by `planarbench run` (may be left out with --sweep)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", opt->out,
                   "Report folder (created): report.html, report.md, figures/*.svg")
       ->required();
   cmd->add_option("--thresholds", opt->thresholds,
                   "Thresholds file (TOML): adds pass/fail to every checked metric")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--sweep", opt->sweep,
+                  "Sweep file written by `planarbench sweep`: adds the work-precision section "
+                  "(log-log error vs wall time per case, time to reach 1e-3 and 1e-5 m, cost per "
+                  "simulated second)")
       ->check(CLI::ExistingFile);
   cmd->add_flag("--quiet,-q", opt->quiet, "Print nothing on success");
   return [opt] { return run_report(*opt); };

@@ -1,7 +1,6 @@
 // planarbench run: every (case, engine) of the selection into one results file.
 #include <fmt/format.h>
 
-#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -15,6 +14,7 @@
 #include "planarbench/errors.hpp"
 #include "planarbench/results_file.hpp"
 #include "planarbench/runner.hpp"
+#include "task_scheduler.hpp"
 
 namespace pb::cli {
 
@@ -71,9 +71,11 @@ class Progress {
 };
 
 int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
-  if (opt.jobs < 1 || opt.jobs > 64) {
-    throw InputError("--jobs", 0, "", fmt::format("must be in [1, 64] (got {})", opt.jobs));
-  }
+  // every option is checked before a case is read or anything runs, the
+  // output folder included (fail fast, write nothing)
+  check_jobs(opt.jobs);
+  check_output_file("--out", opt.out);
+  check_engine_spec(opt.engine_spec);
   const Overrides overrides = parse_overrides(opt.set);
   // a comma-separated list of case specs is accepted too
   std::vector<std::filesystem::path> paths;
@@ -85,7 +87,9 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
+  check_not_an_input("--out", opt.out, paths);
   const auto engines = resolve_engines(opt.engine_spec);
+  check_engine_settings(overrides.engine_keys, engines);
 
   // everything is loaded and validated before anything runs
   std::vector<Case> cases;
@@ -102,14 +106,20 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
   }
   std::vector<RunResult> results(tasks.size());
   Progress progress(opt.quiet, tasks.size());
-  std::atomic<std::size_t> next{0};
+  std::vector<SchedulerTask> plan;
+  for (const Task& t : tasks) {
+    plan.push_back(SchedulerTask{expected_cost(t.engine, cases[t.case_index].duration_s),
+                                 exclusive_group(t.engine)});
+  }
+  TaskScheduler scheduler(std::move(plan));
   std::mutex error_mutex;
   std::exception_ptr first_error;
 
-  // workers take tasks in order; results land at the task's index, so the
-  // file does not depend on the number of jobs
+  // workers take the longest tasks first; results land at the task's index,
+  // so the file does not depend on the number of jobs or the order
   auto worker = [&] {
-    for (std::size_t i = next++; i < tasks.size(); i = next++) {
+    while (const auto next = scheduler.acquire()) {
+      const std::size_t i = *next;
       const Task& task = tasks[i];
       const Case& c = cases[task.case_index];
       const std::string what = fmt::format("{} x {}", c.name, task.engine);
@@ -124,8 +134,9 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
       } catch (...) {
         std::lock_guard<std::mutex> lock(error_mutex);
         if (!first_error) first_error = std::current_exception();
-        next = tasks.size();
+        scheduler.cancel();
       }
+      scheduler.release(i);
     }
   };
   const int n_threads = std::min<int>(opt.jobs, static_cast<int>(tasks.size()));

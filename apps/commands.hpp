@@ -13,5 +13,6 @@ Action add_list_command(CLI::App& app);
 Action add_run_command(CLI::App& app, int argc, char** argv);
 Action add_check_command(CLI::App& app);
 Action add_report_command(CLI::App& app);
+Action add_sweep_command(CLI::App& app, int argc, char** argv);
 
 }  // namespace pb::cli

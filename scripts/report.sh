@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Sets up, builds, runs every case on every engine and writes the accuracy
-# report (the README's report command):
+# Sets up, builds, runs every case on every engine, sweeps every engine over
+# its step sizes (and the reference over its tolerances), and writes the
+# accuracy report (the README's report command):
 #   results/results.h5          the results file (HDF5, SPEC §5)
+#   results/sweep.h5            the work-precision sweep (HDF5, apps/cmd_sweep.cpp)
 #   results/report/report.html  the report, self-contained (open it in a browser)
 #   results/report/report.md    the same in Markdown, with SVG figures
 # and prints the gate's verdict against cases/thresholds.toml.
+# Set PB_SKIP_SWEEP=1 to leave the sweep out (it takes about 2 minutes).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh release
@@ -13,7 +16,12 @@ mkdir -p results
 PB=./build/release/apps/planarbench
 rc=0
 "$PB" run --case all --engine all --jobs "$(nproc)" --out results/results.h5 || rc=$?
-"$PB" report results/results.h5 --thresholds cases/thresholds.toml --out results/report
+sweep_args=()
+if [ "${PB_SKIP_SWEEP:-0}" != 1 ]; then
+  "$PB" sweep --case all --engine all --jobs "$(nproc)" --out results/sweep.h5
+  sweep_args=(--sweep results/sweep.h5)
+fi
+"$PB" report results/results.h5 "${sweep_args[@]}" --thresholds cases/thresholds.toml --out results/report
 "$PB" check --thresholds cases/thresholds.toml results/results.h5 || rc=$((rc > 0 ? rc : $?))
 echo "report: results/report/report.html and results/report/report.md"
 exit "$rc"

@@ -17,6 +17,7 @@ PACKAGES=(
   nlohmann-json3-dev
   libfmt-dev
   python3-h5py python3-numpy
+  clang libclang-rt-14-dev     # scripts/fuzz.sh: Clang and libFuzzer's runtime
 )
 
 SUDO=""

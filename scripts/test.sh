@@ -1,9 +1,20 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs the whole test suite (the README's test command;
-# .ci/run calls it). Usage: scripts/test.sh [preset]   (release | debug | asan-ubsan)
+# .ci/run calls it). Usage: scripts/test.sh [preset] [fuzz-seconds]
+#   preset         release (default) | debug | asan-ubsan
+#   fuzz-seconds   how long each libFuzzer target runs afterwards (default 30;
+#                  0 skips fuzzing). scripts/fuzz.sh builds them with Clang.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 PRESET="${1:-release}"
+FUZZ_SECONDS="${2:-30}"
+start=$(date +%s)
 bash scripts/build.sh "$PRESET"
 bash scripts/setup_web.sh
+echo "test: build took $(( $(date +%s) - start )) s"
 ctest --preset "$PRESET" -j "$(nproc)" --timeout 900
+echo "test: build and tests took $(( $(date +%s) - start )) s"
+if [ "$FUZZ_SECONDS" != 0 ]; then
+  bash scripts/fuzz.sh "$FUZZ_SECONDS"
+fi
+echo "test: everything took $(( $(date +%s) - start )) s"

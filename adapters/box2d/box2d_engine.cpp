@@ -23,6 +23,7 @@
 #include <utility>
 
 #include "box2d_contact_probe.hpp"
+#include "box2d_faults.hpp"
 #include "box2d_frame.hpp"
 #include "box2d_geometry.hpp"
 #include "box2d_inject_geometry.hpp"
@@ -90,12 +91,14 @@ class Box2dEngine final : public Engine {
 
  private:
   [[nodiscard]] bool inject() const { return settings_.mode == "inject"; }
-  static void validate_bodies(const Case& c);
+  static void validate_bodies(const Case& c, double dt_s);
   void create_bodies(double threshold_mps);
   void create_joints();
   void map_pairs();
   void step();
-  void check_finite() const;
+  void apply_injected_forces();
+  void check_state();
+  [[noreturn]] void fail(std::string reason);
   void sample_pairs();
   void sample_engine_pair(std::size_t k);
   void sample_injected_pair(std::size_t k);
@@ -115,6 +118,8 @@ class Box2dEngine final : public Engine {
   std::vector<BodyInertia> inertia_;
   std::vector<PairSample> samples_;
   std::vector<double> latched_approach_mps_;  // inject mode: delta_dot at onset, per pair
+  std::vector<Vec2> injected_force_n_;        // inject mode: total force per body this step, N
+  std::vector<double> injected_torque_nm_;    // inject mode: about the centre of mass, N m
   EpisodeTracker tracker_;
   double orphan_impulse_ns_ = 0.0;  // N s, solver impulse outside any episode (should stay 0)
 
@@ -124,6 +129,7 @@ class Box2dEngine final : public Engine {
   PairContactListener listener_{pairs_, pair_states_, inertia_, time_s_};
   std::unique_ptr<b2World> world_;
   std::vector<b2Body*> bodies_;  // index = Case::bodies index
+  std::string fault_;  // why the run stopped ("" while it did not): it does not go on
 };
 
 std::string Box2dEngine::version() const {
@@ -189,10 +195,11 @@ void Box2dEngine::build(const Case& c, const SettingsOverrides& overrides) {
   if (cap.support == Support::unsupported)
     throw EngineError("box2d cannot run this case: " + cap.reason);
 
-  validate_bodies(c);
+  validate_bodies(c, settings_.dt_s);
   case_ = c;
   steps_ = 0;
   time_s_ = 0.0;
+  fault_.clear();
   collide_ = !inject();
   tracker_ = EpisodeTracker{};
   bodies_.clear();
@@ -235,24 +242,19 @@ void Box2dEngine::build(const Case& c, const SettingsOverrides& overrides) {
   listener_.reserve_log(kOnsetLogCapacity);
   samples_.assign(c.contacts.size(), PairSample{});
   latched_approach_mps_.assign(c.contacts.size(), 0.0);
+  injected_force_n_.assign(c.bodies.size(), Vec2::Zero());
+  injected_torque_nm_.assign(c.bodies.size(), 0.0);
   orphan_impulse_ns_ = 0.0;
   sample_pairs();
 }
 
 // Debian's libbox2d keeps its asserts (b2Body's constructor asserts finite
-// poses), and a dynamic body without positive mass does not move at all in
-// Box2D 2.4 (v += h invMass (m g + f)): both are refused here, with the body named
-void Box2dEngine::validate_bodies(const Case& c) {
-  for (const auto& b : c.bodies) {
-    const bool finite_pose = b.position_m.allFinite() && std::isfinite(b.angle_rad) &&
-                             b.velocity_mps.allFinite() && std::isfinite(b.angular_velocity_radps);
-    if (!finite_pose)
-      throw EngineError(fmt::format("box2d: body '{}' has a non-finite initial state", b.name));
-    if (!b.fixed && !(b.mass_kg > 0.0 && b.inertia_kgm2 > 0.0 && std::isfinite(b.mass_kg) &&
-                      std::isfinite(b.inertia_kgm2))) {
-      throw EngineError(
-          fmt::format("box2d: moving body '{}' needs a finite mass and inertia > 0", b.name));
-    }
+// poses, SetMassData a positive inertia), a dynamic body whose mass rounds to
+// 0 in float gets 1 kg, and a first step beyond Box2D's clamps is not the
+// case's: all refused here, with the body named (box2d_faults.hpp)
+void Box2dEngine::validate_bodies(const Case& c, double dt_s) {
+  if (const std::string why = refused_input_reason(c, dt_s); !why.empty()) {
+    throw EngineError("box2d: refused: " + why);
   }
 }
 
@@ -448,6 +450,7 @@ void Box2dEngine::map_pairs() {
 
 void Box2dEngine::advance_to(double t_s) {
   if (!world_) throw EngineError("box2d: advance_to before build");
+  if (!fault_.empty()) throw EngineError(fault_);
   // a fixed-step engine stops at its last step not after t_s (engine.hpp)
   const double dt = settings_.dt_s;
   while (static_cast<double>(steps_ + 1) * dt <= t_s + 1e-9 * dt) step();
@@ -455,38 +458,79 @@ void Box2dEngine::advance_to(double t_s) {
 
 void Box2dEngine::step() {
   const float dt = static_cast<float>(settings_.dt_s);
-  if (inject()) {
-    // the force of the state at the start of the step, equal and opposite
-    for (std::size_t k = 0; k < samples_.size(); ++k) {
-      const PairSample& s = samples_[k];
-      const ContactPair& p = case_.contacts[k];
-      if (s.valid && !std::isfinite(s.force_n)) {
-        throw EngineError(fmt::format("box2d: non-finite contact force of '{}' at t = {:.9g} s",
-                                      p.name, time_s_));
-      }
-      if (!s.valid || !(s.force_n > 0.0)) continue;
-      const b2Vec2 f_on_b = to_b2(s.force_n * s.normal);
-      const b2Vec2 point = to_b2(s.point_m);
-      bodies_[static_cast<std::size_t>(p.body_b)]->ApplyForce(f_on_b, point, true);
-      bodies_[static_cast<std::size_t>(p.body_a)]->ApplyForce(-f_on_b, point, true);
-    }
-  }
+  if (inject()) apply_injected_forces();
   for (auto& st : pair_states_) st.step_impulse_ns = 0.0;
   world_->Step(dt, settings_.velocity_iterations, settings_.position_iterations);
   ++steps_;
   time_s_ = static_cast<double>(steps_) * settings_.dt_s;
-  check_finite();
+  check_state();
   sample_pairs();
 }
 
-void Box2dEngine::check_finite() const {
+// the force of the state at the start of the step, equal and opposite; a
+// force Box2D would clamp (or overflow float with) ends the run before the step
+void Box2dEngine::apply_injected_forces() {
+  std::fill(injected_force_n_.begin(), injected_force_n_.end(), Vec2::Zero());
+  std::fill(injected_torque_nm_.begin(), injected_torque_nm_.end(), 0.0);
+  for (std::size_t k = 0; k < samples_.size(); ++k) {
+    const PairSample& s = samples_[k];
+    const ContactPair& p = case_.contacts[k];
+    if (s.valid && !std::isfinite(s.force_n)) {
+      fail(fmt::format("box2d: non-finite contact force of '{}' at t = {:.9g} s", p.name, time_s_));
+    }
+    if (!s.valid || !(s.force_n > 0.0)) continue;
+    // totals per body; torque about the centre of mass, r x F
+    auto add = [&](int body, const Vec2& f_n) {
+      const auto i = static_cast<std::size_t>(body);
+      if (case_.bodies[i].fixed) return;
+      const Vec2 r = s.point_m - from_b2(bodies_[i]->GetWorldCenter());
+      injected_force_n_[i] += f_n;
+      injected_torque_nm_[i] += r.x() * f_n.y() - r.y() * f_n.x();
+    };
+    const Vec2 f_on_b = s.force_n * s.normal;  // N
+    add(p.body_b, f_on_b);
+    add(p.body_a, -f_on_b);
+  }
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (case_.bodies[i].fixed || injected_force_n_[i].isZero(0.0)) continue;
+    const std::string why =
+        injected_force_reason(*bodies_[i], case_.bodies[i], case_.gravity_mps2,
+                              injected_force_n_[i], injected_torque_nm_[i], settings_.dt_s);
+    if (!why.empty()) {
+      fail(fmt::format("box2d: body '{}' diverged at t = {:.9g} s: {}", case_.bodies[i].name,
+                       time_s_, why));
+    }
+  }
+  for (std::size_t k = 0; k < samples_.size(); ++k) {
+    const PairSample& s = samples_[k];
+    const ContactPair& p = case_.contacts[k];
+    if (!s.valid || !(s.force_n > 0.0)) continue;
+    const b2Vec2 f_on_b = to_b2(s.force_n * s.normal);
+    const b2Vec2 point = to_b2(s.point_m);
+    bodies_[static_cast<std::size_t>(p.body_b)]->ApplyForce(f_on_b, point, true);
+    bodies_[static_cast<std::size_t>(p.body_a)]->ApplyForce(-f_on_b, point, true);
+  }
+}
+
+// after every step: a non-finite state, or a velocity at Box2D's clamp
+void Box2dEngine::check_state() {
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     if (case_.bodies[i].fixed) continue;
     if (!finite(body_state(*bodies_[i]))) {
-      throw EngineError(fmt::format("box2d: non-finite state of body '{}' at t = {:.9g} s",
-                                    case_.bodies[i].name, time_s_));
+      fail(fmt::format("box2d: non-finite state of body '{}' at t = {:.9g} s",
+                       case_.bodies[i].name, time_s_));
+    }
+    if (const std::string why = clamped_velocity_reason(*bodies_[i], settings_.dt_s);
+        !why.empty()) {
+      fail(fmt::format("box2d: body '{}' diverged at t = {:.9g} s: {}", case_.bodies[i].name,
+                       time_s_, why));
     }
   }
+}
+
+void Box2dEngine::fail(std::string reason) {
+  fault_ = std::move(reason);
+  throw EngineError(fault_);
 }
 
 void Box2dEngine::sample_pairs() {

@@ -10,11 +10,13 @@
 #include <fmt/format.h>
 #include <mujoco/mujoco.h>
 
+#include <array>
 #include <cmath>
 #include <optional>
 
 #include "mujoco_contact_mapping.hpp"
 #include "mujoco_exact_depth.hpp"
+#include "mujoco_fault.hpp"
 #include "mujoco_frame.hpp"
 #include "mujoco_geometry.hpp"
 #include "mujoco_injector.hpp"
@@ -78,12 +80,14 @@ class MujocoEngine final : public Engine {
   std::vector<ContactEpisode> episodes() const override { return tracker_.episodes(); }
   long steps() const override { return steps_; }
   nlohmann::json mapping() const override;
+  nlohmann::json extra_attributes() const override;
 
  private:
   MjcfOptions base_options() const;
   PairParams pair_params(std::size_t k, bool inactive) const;
   Calibration calibration(std::size_t k, const FirstTouch& t) const;
   void ensure_current();
+  void check_warnings();
   void sample();
   BodyState state_of(std::size_t body) const;
   nlohmann::json describe_bodies() const;
@@ -110,6 +114,12 @@ class MujocoEngine final : public Engine {
   long steps_ = 0;
   bool forward_current_ = false;  // mj_forward ran at the current state
   bool sampled_ = false;          // the current state was sampled
+  // the reason of the warning that ended the run ("" while none did): MuJoCo
+  // has reset the state by then, so the run must not go on from it
+  std::string fault_;
+  // warnings that are noted only (WarningInfo::fault false): count, first time s
+  std::array<long, mjNWARNING> noted_count_{};
+  std::array<double, mjNWARNING> noted_first_s_{};
   nlohmann::json mapping_ = nlohmann::json::object();
 };
 
@@ -287,6 +297,9 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
   data_.reset(mj_makeData(model_.get()));
   set_initial_state(model_.get(), data_.get(), case_, layout_);
   watch_.reset(data_.get());
+  fault_.clear();
+  noted_count_.fill(0);
+  noted_first_s_.fill(0.0);
   scratch_.emplace(model_.get());
   if (inject_) injector_ = std::make_unique<ForceInjector>(case_, model_.get(), layout_);
   obs_.clear();
@@ -366,15 +379,27 @@ void MujocoEngine::ensure_current() {
   mjData* d = data_.get();
   if (!forward_current_) {
     forward_checked(m, d);
-    if (const char* w = watch_.new_warning(d)) {
-      throw EngineError(
-          fmt::format("mujoco: {} at t = {:.9g} s ({})", w, time(), last_warning_text()));
-    }
+    check_warnings();
     forward_current_ = true;
   }
   if (!sampled_) {
     sample();
     sampled_ = true;
+  }
+}
+
+// MuJoCo's warning counters after every half step: a fault ends the run at
+// the step it first occurs in, a noted warning is counted
+void MujocoEngine::check_warnings() {
+  for (const RaisedWarning& w : watch_.raised(data_.get())) {
+    const auto k = static_cast<std::size_t>(w.warning);
+    if (!warning_info(w.warning).fault) {
+      if (noted_count_[k] == 0) noted_first_s_[k] = time();
+      noted_count_[k] += w.count;
+      continue;
+    }
+    fault_ = fault_reason(case_, layout_, w, time(), last_warning_text());
+    throw EngineError(fault_);
   }
 }
 
@@ -423,6 +448,7 @@ void MujocoEngine::sample() {
 
 void MujocoEngine::advance_to(double t_s) {
   if (!model_) throw EngineError("mujoco: advance_to before build");
+  if (!fault_.empty()) throw EngineError(fault_);
   std::optional<ForceInjector::Scope> scope;
   if (injector_) scope.emplace(*injector_);
   while (static_cast<double>(steps_ + 1) * dt_s_ <= t_s + 1e-9 * dt_s_) {
@@ -431,6 +457,8 @@ void MujocoEngine::advance_to(double t_s) {
     ++steps_;
     forward_current_ = false;
     sampled_ = false;
+    // RK4's stages run MuJoCo's pipeline too: their warnings belong to this step
+    check_warnings();
   }
   ensure_current();
 }
@@ -474,6 +502,21 @@ nlohmann::json MujocoEngine::mapping() const {
         {"max_exact_penetration_m", depth_[k].max_penetration_m}};
   }
   return m;
+}
+
+nlohmann::json MujocoEngine::extra_attributes() const {
+  nlohmann::json j = nlohmann::json::object();
+  nlohmann::json noted = nlohmann::json::array();
+  for (int i = 0; i < mjNWARNING; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (noted_count_[k] == 0) continue;
+    noted.push_back({{"warning", warning_info(i).name},
+                     {"meaning", warning_info(i).meaning},
+                     {"count", noted_count_[k]},
+                     {"first_time_s", noted_first_s_[k]}});
+  }
+  if (!noted.empty()) j["mujoco_warnings_noted"] = noted;
+  return j;
 }
 
 void MujocoEngine::contacts(std::vector<ContactSample>& out) const {

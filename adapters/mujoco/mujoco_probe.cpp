@@ -1,9 +1,8 @@
 #include "mujoco_probe.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 
+#include "mujoco_fault.hpp"
 #include "mujoco_frame.hpp"
 #include "mujoco_pair_state.hpp"
 #include "mujoco_stepping.hpp"
@@ -27,9 +26,12 @@ std::vector<FirstTouch> probe_first_touch(const mjModel* m, const Case& c,
   const double dt = m->opt.timestep;
   for (long step = 0; pending > 0 && static_cast<double>(step) * dt <= until_s; ++step) {
     forward_checked(m, d);
-    if (const char* w = watch.new_warning(d)) {
-      throw EngineError(fmt::format("mujoco: contact-free probe: {} at t = {:.9g} s ({})", w,
-                                    static_cast<double>(step) * dt, last_warning_text()));
+    // a fault here fails the build: the model itself cannot be run
+    for (const RaisedWarning& w : watch.raised(d)) {
+      if (!warning_info(w.warning).fault) continue;
+      throw EngineError("contact-free probe run (calibration): " +
+                        fault_reason(c, layout, w, static_cast<double>(step) * dt,
+                                     last_warning_text()));
     }
     observe_pairs(m, d, layout, false, scratch, obs);
     for (std::size_t k = 0; k < touch.size(); ++k) {

@@ -12,6 +12,41 @@ void record_warning(const char* text) {
   t_last_warning = text ? text : "";
 }
 
+// mjtWarning order (mjdata.h); what each check does in MuJoCo 2.2.2:
+// mj_factorI clamps a mass-matrix pivot below mjMINVAL (engine_core_smooth.c),
+// mj_collision and mj_makeConstraint stop adding at nconmax / njmax,
+// mj_checkPos/Vel/Acc reset the state on NaN or |x| > mjMAXVAL (mju_isBad)
+constexpr std::array<WarningInfo, mjNWARNING> kWarnings = {{
+    {"mjWARN_INERTIA",
+     "near-singular inertia matrix: a pivot of the mass matrix below mjMINVAL = 1e-15 was "
+     "raised to it, the bodies are no longer the case's",
+     true, "DOF"},
+    {"mjWARN_CONTACTFULL", "contact list full (nconmax): MuJoCo dropped contacts", true,
+     "contacts (nconmax)"},
+    {"mjWARN_CNSTRFULL", "constraint list full (njmax): MuJoCo dropped constraints", true,
+     "constraint rows (njmax)"},
+    {"mjWARN_VGEOMFULL", "visual geom list full: rendering only", false, "geoms"},
+    {"mjWARN_BADQPOS",
+     "bad number in qpos (NaN, inf or |value| > mjMAXVAL = 1e10): MuJoCo reset the whole state "
+     "to the model's initial state",
+     true, "qpos index"},
+    {"mjWARN_BADQVEL",
+     "bad number in qvel (NaN, inf or |value| > mjMAXVAL = 1e10): MuJoCo reset the whole state "
+     "to the model's initial state",
+     true, "DOF"},
+    {"mjWARN_BADQACC",
+     "bad number in qacc (NaN, inf or |value| > mjMAXVAL = 1e10): MuJoCo reset the whole state "
+     "to the model's initial state",
+     true, "DOF"},
+    {"mjWARN_BADCTRL", "bad number in ctrl: the adapter makes no actuators, ctrl is unused", false,
+     "actuator"},
+}};
+
+// the three checks that reset the state come first in a report
+constexpr std::array<int, mjNWARNING> kReportOrder = {
+    mjWARN_BADQPOS,     mjWARN_BADQVEL,   mjWARN_BADQACC,   mjWARN_INERTIA,
+    mjWARN_CONTACTFULL, mjWARN_CNSTRFULL, mjWARN_VGEOMFULL, mjWARN_BADCTRL};
+
 }  // namespace
 
 void install_warning_handler() {
@@ -40,31 +75,48 @@ void integrate(const mjModel* m, mjData* d) {
   }
 }
 
+const WarningInfo& warning_info(int warning) {
+  static const WarningInfo unknown{"mjWARN_?", "a warning this adapter does not know", true,
+                                   "info"};
+  if (warning < 0 || warning >= mjNWARNING) return unknown;
+  return kWarnings[static_cast<std::size_t>(warning)];
+}
+
 void WarningWatch::reset(const mjData* d) {
   for (int i = 0; i < mjNWARNING; ++i) seen_[static_cast<std::size_t>(i)] = d->warning[i].number;
 }
 
-const char* WarningWatch::new_warning(const mjData* d) {
-  // mjtWarning in mjdata.h; mj_checkPos/Vel/Acc reset the state on a bad number
-  static constexpr std::array<const char*, mjNWARNING> kText = {
-      "near-singular inertia matrix (mjWARN_INERTIA)",
-      "contact list full (mjWARN_CONTACTFULL)",
-      "constraint list full (mjWARN_CNSTRFULL)",
-      "visual geom list full (mjWARN_VGEOMFULL)",
-      "bad number in qpos, state reset by MuJoCo (mjWARN_BADQPOS)",
-      "bad number in qvel, state reset by MuJoCo (mjWARN_BADQVEL)",
-      "bad number in qacc, state reset by MuJoCo (mjWARN_BADQACC)",
-      "bad number in ctrl (mjWARN_BADCTRL)",
-  };
-  const char* found = nullptr;
+std::vector<RaisedWarning> WarningWatch::raised(const mjData* d) {
+  // a counter below the one seen means mj_resetData ran: every count is new
+  bool was_reset = false;
   for (int i = 0; i < mjNWARNING; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    if (d->warning[i].number != seen_[k]) {
-      seen_[k] = d->warning[i].number;
-      if (i != mjWARN_VGEOMFULL && !found) found = kText[k];
-    }
+    was_reset = was_reset || d->warning[i].number < seen_[static_cast<std::size_t>(i)];
   }
-  return found;
+  std::vector<RaisedWarning> out;
+  for (const int i : kReportOrder) {
+    const auto k = static_cast<std::size_t>(i);
+    const int now = d->warning[i].number;
+    const int count = was_reset ? now : now - seen_[k];
+    seen_[k] = now;
+    if (count > 0) out.push_back(RaisedWarning{i, count, d->warning[i].lastinfo});
+  }
+  return out;
+}
+
+const char* WarningWatch::new_warning(const mjData* d) {
+  // "name (meaning)" of every warning, built once
+  static const std::array<std::string, mjNWARNING> kText = [] {
+    std::array<std::string, mjNWARNING> t;
+    for (int i = 0; i < mjNWARNING; ++i) {
+      const WarningInfo& w = warning_info(i);
+      t[static_cast<std::size_t>(i)] = std::string(w.name) + " (" + w.meaning + ")";
+    }
+    return t;
+  }();
+  for (const RaisedWarning& w : raised(d)) {
+    if (w.warning != mjWARN_VGEOMFULL) return kText[static_cast<std::size_t>(w.warning)].c_str();
+  }
+  return nullptr;
 }
 
 }  // namespace pb::internal::mujoco

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 namespace pb::internal::mujoco {
 
@@ -19,12 +20,39 @@ void forward_checked(const mjModel* m, mjData* d);
 // second half: the integrator of m->opt (RK4 reuses the qacc of forward_checked)
 void integrate(const mjModel* m, mjData* d);
 
-// Counts of MuJoCo's warnings (mjData::warning) seen so far.
+// What one of MuJoCo's warnings (mjtWarning, mjdata.h) means for a run.
+struct WarningInfo {
+  const char* name = "";     // "mjWARN_BADQACC"
+  const char* meaning = "";  // what MuJoCo found and what it did about it
+  // true: the simulation is no longer the case's (state reset, contacts or
+  // constraints dropped, mass matrix altered), the run is diverged; false:
+  // noted only (rendering buffers, actuators this adapter never makes)
+  bool fault = false;
+  // what lastinfo is: "DOF", "qpos index", or a count ("contacts (nconmax)")
+  const char* info = "";
+};
+[[nodiscard]] const WarningInfo& warning_info(int warning);
+
+// One kind of warning raised since the last look at the counters.
+struct RaisedWarning {
+  int warning = -1;  // mjtWarning
+  int count = 0;     // times raised since the last look
+  int lastinfo = 0;  // mjWarningStat::lastinfo of the last time
+};
+
+// Counts of MuJoCo's warnings (mjData::warning) seen so far. MuJoCo raises a
+// bad qpos, qvel or qacc in mj_checkPos/Vel/Acc, then calls mj_resetData,
+// which zeroes every counter, and counts the bad number again
+// (engine_forward.c): a counter below the one seen last means such a reset.
 class WarningWatch {
  public:
   void reset(const mjData* d);
-  // the description of a warning raised since the last call, nullptr if none;
-  // the display-only mjWARN_VGEOMFULL is ignored
+  // Every warning raised since the last call (empty, without allocating, when
+  // none): bad numbers first (they come with a reset), then the other
+  // faults, then noted ones; each kind once with its count.
+  [[nodiscard]] std::vector<RaisedWarning> raised(const mjData* d);
+  // The description of the first warning raised since the last call
+  // ("mjWARN_... (meaning)"), nullptr if none; mjWARN_VGEOMFULL is ignored.
   const char* new_warning(const mjData* d);
 
  private:
@@ -34,7 +62,8 @@ class WarningWatch {
 // Routes MuJoCo's warning texts (mju_user_warning, process-global) to a
 // thread-local record instead of stdout and a MUJOCO_LOG.TXT in the working
 // directory: the adapter reports warnings itself, as EngineError. Installed
-// once, only if no other handler is set.
+// once, only if no other handler is set. MuJoCo sends a warning's text the
+// first time it is raised in an mjData (or after a reset) only.
 void install_warning_handler();
 // the last MuJoCo warning text seen on this thread, "" if none
 [[nodiscard]] const std::string& last_warning_text();

@@ -25,6 +25,7 @@
 #include "ode_settings.hpp"
 #include "ode_world.hpp"
 #include "planarbench/contact_force.hpp"
+#include "planarbench/energy_budget.hpp"
 #include "planarbench/episode_tracker.hpp"
 #include "planarbench/errors.hpp"
 
@@ -143,6 +144,7 @@ class OdeEngine final : public Engine {
  private:
   void map_contacts(const std::vector<FirstTouch>& touches);
   void step_once();
+  [[nodiscard]] bool injected_forces_run_away();
   void sample_contacts();
 
   OdeSettings settings_;
@@ -157,6 +159,8 @@ class OdeEngine final : public Engine {
   std::vector<dJointFeedback> feedback_;
   std::vector<char> joint_made_;   // a contact joint was made this step
   std::vector<double> angle_rad_;  // continuous angles, per body
+  std::vector<Vec2> force_n_;      // inject mode: total force per body this step, N
+  std::vector<double> torque_nm_;  // inject mode: about the centre of mass, N m
   EpisodeTracker tracker_;
   bool inject_ = false;
   bool quick_ = false;
@@ -238,6 +242,8 @@ void OdeEngine::build(const Case& c, const SettingsOverrides& overrides) {
   joint_made_.assign(pairs, 0);
   now_.assign(pairs, PairContact{});
   angle_rad_.clear();
+  force_n_.assign(case_.bodies.size(), Vec2::Zero());
+  torque_nm_.assign(case_.bodies.size(), 0.0);
   for (int i = 0; i < world_->body_count(); ++i)
     angle_rad_.push_back(case_.bodies[static_cast<std::size_t>(i)].angle_rad);
 
@@ -286,8 +292,14 @@ void OdeEngine::build(const Case& c, const SettingsOverrides& overrides) {
                    settings_.quick_iterations)
              : std::string("dWorldStep (direct LCP solver, deterministic)");
 
-  // the state at t = 0
+  // the state at t = 0; contacts that start penetrated store elastic
+  // energy, which the runaway bounds allow for
   sample_contacts();
+  double elastic_j = 0.0;
+  for (std::size_t p = 0; p < now_.size(); ++p) {
+    if (now_[p].touching) elastic_j += elastic_energy_j(case_.contacts[p].law, now_[p].depth_m);
+  }
+  world_->set_initial_contact_energy(elastic_j);
 }
 
 // the mapping of every pair, the step, and mapping_["contacts"]
@@ -441,8 +453,49 @@ void OdeEngine::advance_to(double t_s) {
   if (!diverged_.empty()) throw EngineError(diverged_);
 }
 
+// inject mode: the forces about to be applied, per body, against the
+// runaway bounds; a non-finite or runaway force ends the run before ODE
+// integrates it (ODE asserts on a non-finite state inside dWorldStep)
+bool OdeEngine::injected_forces_run_away() {
+  std::fill(force_n_.begin(), force_n_.end(), Vec2::Zero());
+  std::fill(torque_nm_.begin(), torque_nm_.end(), 0.0);
+  for (std::size_t p = 0; p < now_.size(); ++p) {
+    const PairContact& pc = now_[p];
+    const double f = track_[p].force_n;  // N
+    if (!pc.touching) continue;
+    if (!std::isfinite(f)) {
+      diverged_ = fmt::format("ode: the contact force of '{}' is not finite at t = {:.9g} s",
+                              case_.contacts[p].name, time());
+      return true;
+    }
+    if (!(f > 0.0)) continue;
+    // g1 is pushed along the normal, g2 against it; torque r x F about each centre
+    const Vec2 n(pc.geom.normal[0], pc.geom.normal[1]);
+    for (const auto& [geom, sign] : {std::pair{pc.geom.g1, 1.0}, std::pair{pc.geom.g2, -1.0}}) {
+      if (geom == nullptr || dGeomGetBody(geom) == nullptr) continue;
+      const int i = internal::ode::OdeWorld::body_index_of(geom);
+      const auto k = static_cast<std::size_t>(i);
+      const Vec2 force = sign * f * n;
+      const Vec2 r = pc.point_m - world_->state(i).position_m;
+      force_n_[k] += force;
+      torque_nm_[k] += r.x() * force.y() - r.y() * force.x();
+    }
+  }
+  for (int i = 0; i < world_->body_count(); ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (world_->body(i) == nullptr || force_n_[k].isZero(0.0)) continue;
+    const std::string why = world_->applied_force_reason(i, force_n_[k], torque_nm_[k], step_s_);
+    if (why.empty()) continue;
+    diverged_ = fmt::format("ode: body '{}' diverged at t = {:.9g} s: {}", case_.bodies[k].name,
+                            time(), why);
+    return true;
+  }
+  return false;
+}
+
 void OdeEngine::step_once() {
   const std::size_t pairs = now_.size();
+  if (inject_ && injected_forces_run_away()) return;
   // contact forces of this step, from the contacts at the current state
   for (std::size_t p = 0; p < pairs; ++p) {
     joint_made_[p] = 0;
@@ -499,11 +552,12 @@ void OdeEngine::step_once() {
   }
 
   world_->remove_planar_drift();
+  // checked after every step, before the next collision: ODE's colliders
+  // assert on non-finite geometry (libode keeps its dIASSERTs)
   if (const int bad = world_->first_blown_up_body(); bad >= 0) {
-    diverged_ = fmt::format(
-        "ode: body '{}' diverged at t = {:.9g} s (non-finite state or |x| > 1e6 m, |v| > 1e6 m/s, "
-        "|omega| > 1e8 rad/s)",
-        case_.bodies[static_cast<std::size_t>(bad)].name, time());
+    diverged_ = fmt::format("ode: body '{}' diverged at t = {:.9g} s: {}",
+                            case_.bodies[static_cast<std::size_t>(bad)].name, time(),
+                            world_->blow_up_reason(bad));
     return;
   }
   for (int i = 0; i < world_->body_count(); ++i) {

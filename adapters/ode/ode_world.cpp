@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
 
@@ -46,7 +47,19 @@ dBodyID make_body(dWorldID world, const Body& b) {
 
 }  // namespace
 
-OdeWorld::OdeWorld(const Case& c) : case_bodies_(c.bodies) {
+OdeWorld::OdeWorld(const Case& c)
+    : case_bodies_(c.bodies), gravity_mps2_(c.gravity_mps2), duration_s_(c.duration_s) {
+  // E(0) = KE(0) until the engine adds the contacts' elastic energy
+  energy_bound_.gravity_mps2 = c.gravity_mps2.norm();
+  for (const Body& b : c.bodies) {
+    if (b.fixed) continue;
+    energy_bound_.moving_mass_kg += b.mass_kg;
+    energy_bound_.initial_j += 0.5 * b.mass_kg * b.velocity_mps.squaredNorm() +
+                               0.5 * b.inertia_kgm2 * b.angular_velocity_radps *
+                                   b.angular_velocity_radps;
+  }
+  kinetic_start_j_ = energy_bound_.initial_j;
+  set_runaway_bounds();
   ensure_ode_ready_in_this_thread();
   // the destructor does not run when a constructor throws: release here
   try {
@@ -197,27 +210,90 @@ void OdeWorld::remove_planar_drift() {
   }
 }
 
+void OdeWorld::set_initial_contact_energy(double elastic_j) {
+  energy_bound_.initial_j = kinetic_start_j_ + std::max(0.0, elastic_j);
+  set_runaway_bounds();
+}
+
+void OdeWorld::set_runaway_bounds() {
+  // the bounds at the end of the run hold for the whole run (they grow with
+  // t); E(0) gets the budget's floor (every body at kEnergyFloorSpeedMps) so
+  // that a case where nothing moves has bounds > 0
+  EnergyBound bound = energy_bound_;
+  for (const Body& b : case_bodies_) {
+    if (!b.fixed) bound.initial_j += 0.5 * b.mass_kg * kEnergyFloorSpeedMps * kEnergyFloorSpeedMps;
+  }
+  const double ke_j = kRunawayEnergyFactor * bound.kinetic_j(duration_s_);
+  const double reach = std::sqrt(kRunawayEnergyFactor);
+  bounds_.assign(case_bodies_.size(), Bounds{});
+  for (std::size_t i = 0; i < case_bodies_.size(); ++i) {
+    const Body& b = case_bodies_[i];
+    if (b.fixed) continue;
+    bounds_[i].speed_mps = std::sqrt(2.0 * ke_j / b.mass_kg);
+    bounds_[i].spin_radps = std::sqrt(2.0 * ke_j / b.inertia_kgm2);
+    bounds_[i].displacement_m = reach * bound.displacement_m(b.mass_kg, duration_s_);
+  }
+}
+
+namespace {
+
+// |(x, y, z)|
+double norm3(const dReal* v) {
+  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+
+}  // namespace
+
 int OdeWorld::first_blown_up_body() const {
-  constexpr double kMaxPosition = 1e6;  // m
-  constexpr double kMaxSpeed = 1e6;     // m/s
-  constexpr double kMaxSpin = 1e8;      // rad/s
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     const dBodyID b = bodies_[i];
     if (b == nullptr) continue;
     const dReal* p = dBodyGetPosition(b);
-    const dReal* v = dBodyGetLinearVel(b);
-    const dReal* w = dBodyGetAngularVel(b);
     const dReal* q = dBodyGetQuaternion(b);
-    bool ok = true;
-    for (int k = 0; k < 3; ++k) {
-      ok = ok && std::isfinite(p[k]) && std::abs(p[k]) <= kMaxPosition;
-      ok = ok && std::isfinite(v[k]) && std::abs(v[k]) <= kMaxSpeed;
-      ok = ok && std::isfinite(w[k]) && std::abs(w[k]) <= kMaxSpin;
-    }
+    const Vec2& p0 = case_bodies_[i].position_m;
+    const dReal moved[3] = {p[0] - p0.x(), p[1] - p0.y(), p[2]};
+    // NaN fails every comparison: !(x <= bound) catches it
+    bool ok = norm3(moved) <= bounds_[i].displacement_m &&
+              norm3(dBodyGetLinearVel(b)) <= bounds_[i].speed_mps &&
+              norm3(dBodyGetAngularVel(b)) <= bounds_[i].spin_radps;
     for (int k = 0; k < 4; ++k) ok = ok && std::isfinite(q[k]);
     if (!ok) return static_cast<int>(i);
   }
   return -1;
+}
+
+std::string OdeWorld::blow_up_reason(int i) const {
+  const auto idx = static_cast<std::size_t>(i);
+  const BodyState s = state(i);
+  const dReal* q = dBodyGetQuaternion(bodies_[idx]);
+  const bool finite = s.position_m.allFinite() && s.velocity_mps.allFinite() &&
+                      std::isfinite(s.angular_velocity_radps) && std::isfinite(q[0]) &&
+                      std::isfinite(q[1]) && std::isfinite(q[2]) && std::isfinite(q[3]);
+  if (!finite) return "its state is not finite (NaN or inf)";
+  return fmt::format(
+      "it runs away: |v| = {:.4g} m/s (bound {:.4g}), |omega| = {:.4g} rad/s (bound {:.4g}), "
+      "{:.4g} m from its start (bound {:.4g}); the bounds are {} times the most kinetic energy a "
+      "passive system starting with {:.4g} J can reach in {} s under gravity",
+      s.velocity_mps.norm(), bounds_[idx].speed_mps, std::abs(s.angular_velocity_radps),
+      bounds_[idx].spin_radps, (s.position_m - case_bodies_[idx].position_m).norm(),
+      bounds_[idx].displacement_m, kRunawayEnergyFactor, energy_bound_.initial_j, duration_s_);
+}
+
+std::string OdeWorld::applied_force_reason(int i, const Vec2& force_n, double torque_nm,
+                                           double step_s) const {
+  const auto idx = static_cast<std::size_t>(i);
+  const Body& b = case_bodies_[idx];
+  const BodyState s = state(i);
+  // ODE's semi-implicit Euler: v += h (g + F / m), omega += h tau / I
+  const Vec2 v = s.velocity_mps + step_s * (gravity_mps2_ + force_n / b.mass_kg);
+  const double w = s.angular_velocity_radps + step_s * torque_nm / b.inertia_kgm2;
+  if (v.norm() <= bounds_[idx].speed_mps && std::abs(w) <= bounds_[idx].spin_radps) return "";
+  return fmt::format(
+      "the contact force it is about to get, |F| = {:.4g} N (torque {:.4g} N m), would take it to "
+      "|v| = {:.4g} m/s (bound {:.4g}), |omega| = {:.4g} rad/s (bound {:.4g}) in one step of {} "
+      "s: the explicit force law runs away (too stiff for this step; use more ode.substeps)",
+      force_n.norm(), torque_nm, v.norm(), bounds_[idx].speed_mps, std::abs(w),
+      bounds_[idx].spin_radps, step_s);
 }
 
 }  // namespace pb::internal::ode

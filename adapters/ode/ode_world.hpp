@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ode_geometry.hpp"
+#include "planarbench/energy_budget.hpp"
 #include "planarbench/case.hpp"
 #include "planarbench/engine.hpp"
 
@@ -49,15 +50,47 @@ class OdeWorld {
   // "Plane 2D"; ENGINES.md): keep only the z rotation and spin.
   void remove_planar_drift();
 
-  // the first moving body whose state is not finite or exceeds the blow-up
-  // bounds (|x| > 1e6 m, |v| > 1e6 m/s, |omega| > 1e8 rad/s); -1 if none
+  // The runaway bounds come from the a-priori energy bound of a passive
+  // system (planarbench/energy_budget.hpp) over the case's duration, widened
+  // by kRunawayEnergyFactor in energy: a body faster than sqrt(2 F KE_max /
+  // m), spinning faster than sqrt(2 F KE_max / I) or farther from its start
+  // than sqrt(F) times its displacement bound is running away. The constructor
+  // takes E(0) = KE(0); the engine adds the elastic energy of contacts that
+  // start penetrated (J) once it has collided the initial state.
+  void set_initial_contact_energy(double elastic_j);
+  // the first moving body whose state is not finite or exceeds the runaway
+  // bounds; -1 if none
   [[nodiscard]] int first_blown_up_body() const;
+  // why body i is flagged by first_blown_up_body()
+  [[nodiscard]] std::string blow_up_reason(int i) const;
+  // Why a force the adapter is about to apply would take body i past its
+  // runaway bounds in the coming step of step_s ("" when not): the velocity
+  // after the step, v + h (g + F / m) and omega + h tau / I (torque about the
+  // centre of mass), checked before ODE integrates it. A non-finite or
+  // overflowing state inside dWorldStep trips ODE's own asserts (measured:
+  // "ODE INTERNAL ERROR 1: assertion !bSafeNormalize4Fault failed in
+  // dxNormalize4()" after an infinite force), which abort the process.
+  [[nodiscard]] std::string applied_force_reason(int i, const Vec2& force_n, double torque_nm,
+                                                 double step_s) const;
 
  private:
   void build(const Case& c);
   void destroy();
+  void set_runaway_bounds();
+
+  // per body: the runaway bounds (infinite for fixed bodies)
+  struct Bounds {
+    double speed_mps = 0.0;
+    double spin_radps = 0.0;
+    double displacement_m = 0.0;
+  };
 
   std::vector<Body> case_bodies_;
+  EnergyBound energy_bound_;
+  Vec2 gravity_mps2_ = Vec2::Zero();
+  double kinetic_start_j_ = 0.0;  // J, KE(0)
+  double duration_s_ = 0.0;
+  std::vector<Bounds> bounds_;
   dWorldID world_ = nullptr;
   dThreadingImplementationID threading_ = nullptr;
   dSpaceID space_ = nullptr;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <numbers>
 #include <sstream>
@@ -36,6 +37,8 @@ constexpr int kMaxPolygonPoints = 10000;        // the self-intersection check i
 constexpr double kMaxSize_m = 1e4;              // m, radius, semi-axis, extent
 constexpr double kMaxCoordinate_m = 1e6;        // m, positions, anchors, polygon points
 constexpr double kMaxThreshold_m = 1e-3;        // m, contact distance threshold
+// bytes of a case file: ten 10000-point polygons at ~45 bytes a point are 4.5 MB
+constexpr std::uintmax_t kMaxCaseFileBytes = 8u << 20;  // 8 MiB
 
 const std::vector<std::string> kCaseKeys = {"duration", "output_interval", "gravity",
                                             "outline_points", "truth"};
@@ -450,6 +453,9 @@ Case build_case(const toml::table& root, const Origins& origins) {
 }
 
 bool has_case_table(const std::filesystem::path& path) {
+  // too large to be a case: listed, so that loading it says why
+  std::error_code ec;
+  if (std::filesystem::file_size(path, ec) > kMaxCaseFileBytes && !ec) return true;
   try {
     const toml::table t = toml::parse_file(path.string());
     return t.get_as<toml::table>("case") != nullptr;
@@ -515,6 +521,11 @@ Case load_case(const std::filesystem::path& path, const SettingsOverrides& case_
   if (std::filesystem::is_directory(path, ec)) {
     throw InputError(path.string(), 0, "", "is a directory, not a case file");
   }
+  if (const auto bytes = std::filesystem::file_size(path, ec); !ec && bytes > kMaxCaseFileBytes) {
+    throw InputError(path.string(), 0, "",
+                     fmt::format("is {} bytes; a case file has at most {} bytes (8 MiB)", bytes,
+                                 kMaxCaseFileBytes));
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), 0, "", "cannot open the case file for reading");
   std::ostringstream text;
@@ -542,9 +553,15 @@ std::vector<std::filesystem::path> resolve_cases(const std::string& spec,
 
   if (spec == "all") {
     if (!fs::is_directory(cases_dir, ec)) {
-      throw InputError(cases_dir.string(), 0, "", "no such cases folder");
+      throw InputError(cases_dir.string(), 0, "",
+                       "no such cases folder; give --cases-dir (or $PLANARBENCH_CASES_DIR) a "
+                       "folder of case files");
     }
-    if (all.empty()) throw InputError(cases_dir.string(), 0, "", "no case files (*.toml with [case])");
+    if (all.empty()) {
+      throw InputError(cases_dir.string(), 0, "",
+                       "holds no case files (*.toml with a [case] table); give --cases-dir (or "
+                       "$PLANARBENCH_CASES_DIR) a folder of case files");
+    }
     return all;
   }
   const fs::path by_name = cases_dir / (spec + ".toml");
@@ -553,6 +570,12 @@ std::vector<std::filesystem::path> resolve_cases(const std::string& spec,
   }
   if (fs::is_regular_file(fs::path(spec), ec)) return {fs::path(spec)};
 
+  if (!fs::is_directory(cases_dir, ec)) {
+    throw InputError("--case", 0, spec,
+                     fmt::format("no such case file, and the cases folder '{}' does not exist; "
+                                 "give a case file or a name in an existing cases folder",
+                                 cases_dir.string()));
+  }
   std::vector<std::string> names;
   for (const auto& p : all) names.push_back(p.stem().string());
   throw InputError("--case", 0, spec,

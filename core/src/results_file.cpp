@@ -1,6 +1,7 @@
 #include "planarbench/results_file.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -260,6 +261,36 @@ void write_file(const fs::path& path, const ResultsFile& results) {
   file.close(object);
 }
 
+// The temporary a writer of `name` uses: `.<name>.tmp.<pid>` beside it.
+std::string temporary_prefix(const fs::path& path) {
+  return fmt::format(".{}.tmp.", path.filename().string());
+}
+
+// Removes the temporaries of earlier writers of the same target that were
+// killed mid-write (SIGKILL, OOM, power loss run no clean-up): those whose pid
+// names no process on this host (kill(pid, 0) fails with ESRCH; EPERM means
+// alive). A reused pid only delays the removal to a later run. Best effort:
+// the write it follows has already succeeded.
+void remove_stale_temporaries(const fs::path& dir, const fs::path& path) {
+  const std::string prefix = temporary_prefix(path);
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string file = it->path().filename().string();
+    if (file.rfind(prefix, 0) != 0) continue;
+    const std::string digits = file.substr(prefix.size());
+    // a pid: decimal, at most 7 digits (pid_max <= 2^22 on Linux)
+    if (digits.empty() || digits.size() > 7 ||
+        digits.find_first_not_of("0123456789") != std::string::npos) {
+      continue;
+    }
+    const long pid = std::stol(digits);
+    if (pid <= 0 || pid == static_cast<long>(::getpid())) continue;
+    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+    std::error_code ignored;
+    fs::remove(it->path(), ignored);
+  }
+}
+
 // flushes a closed file's data to the disk
 void fsync_path(const fs::path& path, int flags) {
   const int fd = ::open(path.c_str(), flags);
@@ -490,7 +521,7 @@ void write_results_file(const fs::path& path, const ResultsFile& results) {
   // write a temporary file beside the target, flush it, then rename over the
   // target: readers see the old file or the complete new one, never a part
   const fs::path tmp =
-      dir / fmt::format(".{}.tmp.{}", path.filename().string(), static_cast<long>(::getpid()));
+      dir / fmt::format("{}{}", temporary_prefix(path), static_cast<long>(::getpid()));
   try {
     write_file(tmp, results);
     fsync_path(tmp, O_RDONLY);
@@ -502,7 +533,8 @@ void write_results_file(const fs::path& path, const ResultsFile& results) {
     fs::remove(tmp, ec);
     throw;
   }
-  // make the rename itself durable; the file is complete either way
+  remove_stale_temporaries(dir, path);
+  // make the rename and removals durable; the file is complete either way
   try {
     fsync_path(dir, O_RDONLY | O_DIRECTORY);
   } catch (const std::system_error&) {
@@ -512,16 +544,28 @@ void write_results_file(const fs::path& path, const ResultsFile& results) {
 ResultsFile read_results_file(const fs::path& path) {
   internal::QuietHdf5 quiet;
   const std::string file = path.string();
+  const std::string allowed = "give a results file written by `planarbench run`";
   std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(file, 0, "", "does not exist");
-  if (fs::is_directory(path, ec)) throw InputError(file, 0, "", "is a directory, not a file");
+  if (!fs::exists(path, ec)) throw InputError(file, 0, "", "does not exist; " + allowed);
+  if (fs::is_directory(path, ec)) throw InputError(file, 0, "", "is a folder, not a file; " + allowed);
+  if (fs::file_size(path, ec) == 0 && !ec) {
+    throw InputError(file, 0, "", "is empty (0 bytes), not an HDF5 file; " + allowed);
+  }
   if (H5Fis_hdf5(file.c_str()) <= 0) {
     internal::hdf5_last_error();
-    throw InputError(file, 0, "", "is not an HDF5 file");
+    throw InputError(file, 0, "", "is not an HDF5 file (no HDF5 signature); " + allowed);
+  }
+  // a file cut short (a killed writer, a partial copy) fails here: HDF5
+  // compares the end of file it finds with the one the superblock records
+  const hid_t opened = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (opened < 0) {
+    const std::string reason = internal::hdf5_last_error();
+    throw InputError(file, 0, "",
+                     fmt::format("is a truncated or damaged HDF5 file{}; {}",
+                                 reason.empty() ? "" : " (HDF5: " + reason + ")", allowed));
   }
   try {
-    Hid f = internal::owned_file(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "/",
-                                 "cannot be opened: truncated or damaged HDF5 file");
+    Hid f(opened, H5Fclose);
     ResultsFile results = read_file(f.get());
     f.close("/");
     return results;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "planarbench/energy_budget.hpp"
 #include "planarbench/errors.hpp"
 
 namespace pb {
@@ -64,6 +65,9 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
   const auto start = std::chrono::steady_clock::now();
   std::vector<BodyState> states;
   std::vector<ContactSample> contacts;
+  // the generic fault checks of every sample, whatever the engine: a
+  // non-finite state, and kinetic energy beyond what passive contacts allow
+  EnergyBudget energy(c);
   int reported_percent = -1;
   try {
     engine.build(c, engine_overrides);
@@ -78,6 +82,18 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
           throw EngineError(fmt::format("non-finite state of body '{}' at t = {:.9g} s",
                                         c.bodies[static_cast<std::size_t>(moving[j])].name, t));
         }
+      }
+      engine.contacts(contacts);
+      if (k == 0) {
+        energy.start(states, contacts);
+      } else {
+        energy.update(states);
+      }
+      if (energy.runaway()) {
+        throw EngineError(fmt::format("energy runaway at t = {:.9g} s: {}", t, energy.describe()));
+      }
+      for (std::size_t j = 0; j < moving.size(); ++j) {
+        const BodyState& s = states[static_cast<std::size_t>(moving[j])];
         BodyTrajectory& tr = r.bodies[j];
         tr.time_s.push_back(t);
         tr.position_m.push_back(s.position_m);
@@ -86,7 +102,6 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
         tr.velocity_mps.push_back(s.velocity_mps);
         tr.angular_velocity_radps.push_back(s.angular_velocity_radps);
       }
-      engine.contacts(contacts);
       for (const auto& cs : contacts) r.contacts.push_back(ContactRow{t, cs});
       if (options.progress) {
         const int percent = static_cast<int>(100.0 * k / std::max(1, n - 1));

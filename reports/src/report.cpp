@@ -7,6 +7,7 @@
 #include "planarbench/reports/metrics.hpp"
 #include "planarbench/reports/thresholds.hpp"
 #include "planarbench/results_file.hpp"
+#include "planarbench/sweep_file.hpp"
 #include "report_figures.hpp"
 #include "report_files.hpp"
 #include "report_html.hpp"
@@ -16,6 +17,8 @@
 #include "report_svg.hpp"
 #include "report_tables.hpp"
 #include "report_web_assets.hpp"
+#include "report_work_precision.hpp"
+#include "report_work_precision_svg.hpp"
 
 namespace pb {
 
@@ -46,13 +49,36 @@ internal::CaseSection case_section(const Case& c, const CaseRuns& cr,
   return s;
 }
 
+// the work-precision section of a sweep file, and its provenance
+void add_work_precision(Report& report, const fs::path& path) {
+  const SweepFile sweep = read_sweep_file(path);
+  report.sweep_file = path.string();
+  report.work_precision_note = internal::work_precision_note(sweep, path.string());
+  for (const auto& c : sweep.cases) {
+    report.work_precision.push_back(internal::work_precision_case(c));
+  }
+  report.sweep_provenance =
+      internal::sweep_provenance_table(internal::read_file_provenance(path), sweep);
+}
+
+// the sweep file's /parameters, for the page header of a sweep-only report
+std::vector<std::pair<std::string, std::string>> sweep_parameters(const fs::path& path) {
+  return internal::read_file_provenance(path).parameters;
+}
+
 }  // namespace
 
 ReportSummary write_report(const ReportOptions& options) {
   // web assets first: without them there is no page, and no reason to compute
   const auto assets = internal::load_web_assets(internal::web_dir(options.web_dir));
-  const ResultsFile results = read_results_file(options.results);
-  const auto provenance = internal::read_file_provenance(options.results);
+  if (options.results.empty() && options.sweep.empty()) {
+    throw InputError("report", 0, "", "give a results file, --sweep FILE, or both");
+  }
+  // without a results file the report is the work-precision section alone
+  const bool with_results = !options.results.empty();
+  const ResultsFile results = with_results ? read_results_file(options.results) : ResultsFile{};
+  const auto provenance =
+      with_results ? internal::read_file_provenance(options.results) : internal::FileProvenance{};
   const auto thresholds =
       options.thresholds.empty() ? std::vector<Threshold>{} : load_thresholds(options.thresholds);
 
@@ -60,6 +86,11 @@ ReportSummary write_report(const ReportOptions& options) {
   report.results_file = options.results.string();
   report.thresholds_file = options.thresholds.string();
   report.provenance = provenance.parameters;
+  if (!options.sweep.empty()) {
+    add_work_precision(report, options.sweep);
+    // a sweep-only page shows the sweep's build, host and time in its header
+    if (!with_results) report.provenance = sweep_parameters(options.sweep);
+  }
   internal::FigureLimits limits;
   limits.max_outside = options.max_points_outside_contact;
   report.downsampling_note = fmt::format(
@@ -90,13 +121,16 @@ ReportSummary write_report(const ReportOptions& options) {
                                        outcomes.size() - failed, outcomes.size(), failed);
   }
 
-  report.tables.push_back(internal::capability_table(results));
-  report.tables.push_back(internal::timings_table(results, cases));
-  report.tables.push_back(internal::metrics_table(metrics, outcomes, !options.thresholds.empty()));
+  if (with_results) {
+    report.tables.push_back(internal::capability_table(results));
+    report.tables.push_back(internal::timings_table(results, cases));
+    report.tables.push_back(
+        internal::metrics_table(metrics, outcomes, !options.thresholds.empty()));
+  }
   if (!options.thresholds.empty()) {
     report.tables.push_back(internal::unmatched_thresholds_table(outcomes));
   }
-  report.tables.push_back(internal::provenance_table(provenance, results));
+  if (with_results) report.tables.push_back(internal::provenance_table(provenance, results));
 
   // the files: figures first, the pages that reference them last
   internal::ensure_directory(options.out_dir);
@@ -112,6 +146,12 @@ ReportSummary write_report(const ReportOptions& options) {
       }
     }
   }
+  for (const auto& w : report.work_precision) {
+    internal::write_text_atomically(options.out_dir / internal::work_precision_file(w),
+                                    internal::work_precision_svg(w));
+    ++summary.svg_files;
+  }
+  summary.work_precision_cases = report.work_precision.size();
   summary.markdown = options.out_dir / "report.md";
   internal::write_text_atomically(summary.markdown, internal::report_markdown(report));
   summary.html = options.out_dir / "report.html";

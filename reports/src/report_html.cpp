@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "report_svg.hpp"
+#include "report_work_precision_svg.hpp"
 
 namespace pb::internal {
 
@@ -154,6 +155,23 @@ nlohmann::json report_data_json(const Report& report) {
                         {"mapping", m.mapping}});
   }
   data["mappings"] = mappings;
+
+  // the work-precision section: each case's plot as SVG text, its tables
+  data["sweep_file"] = report.sweep_file;
+  nlohmann::json wp = nlohmann::json::array();
+  for (const auto& w : report.work_precision) {
+    wp.push_back({{"name", w.name},
+                  {"id", w.id},
+                  {"truth", w.truth},
+                  {"truth_note", w.truth_note},
+                  {"svg", work_precision_svg(w)},
+                  {"not_plotted", w.not_plotted},
+                  {"summary", table_json(w.summary)},
+                  {"rungs", table_json(w.rungs)}});
+  }
+  data["work_precision"] = {{"note", report.work_precision_note},
+                            {"cases", wp},
+                            {"provenance", table_json(report.sweep_provenance)}};
   return data;
 }
 
@@ -195,7 +213,9 @@ std::string fill_template(const std::string& page,
 std::string report_html(const Report& report, const WebAssets& assets) {
   return fill_template(
       assets.page_template,
-      {{"TITLE", xml_escape("planarbench report: " + report.results_file)},
+      {{"TITLE",
+        xml_escape("planarbench report: " +
+                   (report.results_file.empty() ? report.sweep_file : report.results_file))},
        {"UPLOT_VERSION", assets.uplot_version},
        {"UPLOT_LICENSE", script_safe(comment_safe(assets.uplot_license), "script")},
        {"UPLOT_CSS", script_safe(assets.uplot_css, "style")},

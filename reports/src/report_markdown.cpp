@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "report_mapping.hpp"
+#include "report_work_precision.hpp"
 
 namespace pb::internal {
 
@@ -46,6 +47,29 @@ void section_table(std::string& md, const Table& t) {
 
 }  // namespace
 
+std::string work_precision_markdown(const Report& report) {
+  std::string md = "## Work-precision\n\n" + report.work_precision_note + "\n\n";
+  for (const auto& w : report.work_precision) {
+    md += "### " + w.name + "\n\n";
+    md += "Truth: " + w.truth + (w.truth_note.empty() ? "" : " (" + w.truth_note + ")") + ".\n\n";
+    md += fmt::format("![{}: position error vs wall time]({})\n\n", w.name, work_precision_file(w));
+    if (!w.summary.note.empty()) md += w.summary.note + "\n\n";
+    md += markdown_table(w.summary) + "\n";
+    if (!w.not_plotted.empty()) {
+      md += "Not plotted:\n";
+      for (const auto& n : w.not_plotted) md += "- " + cell(n) + "\n";
+      md += "\n";
+    }
+    md +=
+        "<details><summary>every rung</summary>\n\n" + markdown_table(w.rungs) + "\n</details>\n\n";
+  }
+  if (!report.sweep_provenance.rows.empty()) {
+    md += "### " + report.sweep_provenance.title + "\n\n" + report.sweep_provenance.note + "\n\n" +
+          markdown_table(report.sweep_provenance) + "\n";
+  }
+  return md;
+}
+
 std::vector<FigureView> figure_views(const Figure& f) {
   std::vector<FigureView> views;
   views.push_back(FigureView{"figures/" + f.id + ".svg", f.title, 0.0, f.t_end_s});
@@ -82,11 +106,15 @@ std::string markdown_table(const Table& t) {
 
 std::string report_markdown(const Report& report) {
   std::string md = "# planarbench report\n\n";
-  md += fmt::format("Results file: `{}`", report.results_file);
+  std::string files;
+  if (!report.results_file.empty()) files += fmt::format("Results file: `{}`", report.results_file);
   if (!report.thresholds_file.empty()) {
-    md += fmt::format("; thresholds: `{}`", report.thresholds_file);
+    files += fmt::format("; thresholds: `{}`", report.thresholds_file);
   }
-  md += ".\n\n";
+  if (!report.sweep_file.empty()) {
+    files += fmt::format("{}weep file: `{}`", files.empty() ? "S" : "; s", report.sweep_file);
+  }
+  md += files + ".\n\n";
   if (!report.check_summary.empty()) md += "**Check:** " + report.check_summary + "\n\n";
   md +=
       "The interactive page `report.html` (same folder) has zoomable figures; here they are "
@@ -96,8 +124,10 @@ std::string report_markdown(const Report& report) {
   // contents
   md += "Contents:\n";
   for (const auto& c : report.cases) md += fmt::format("- [{}](#{})\n", c.name, anchor(c.name));
+  if (!report.work_precision.empty()) md += "- [Work-precision](#work-precision)\n";
   for (const auto& t : report.tables) md += fmt::format("- [{}](#{})\n", t.title, anchor(t.title));
-  md += "- [Parameter mapping](#parameter-mapping)\n\n";
+  if (!report.results_file.empty()) md += "- [Parameter mapping](#parameter-mapping)\n";
+  md += "\n";
 
   for (const auto& c : report.cases) {
     md += "## " + c.name + "\n\n" + c.description + "\n\n";
@@ -127,7 +157,10 @@ std::string report_markdown(const Report& report) {
     }
   }
 
+  if (!report.work_precision.empty()) md += work_precision_markdown(report);
   for (const auto& t : report.tables) section_table(md, t);
+  // a sweep-only report has no runs to map
+  if (report.results_file.empty()) return md;
 
   md +=
       "## Parameter mapping\n\nHow each engine expressed each case's contact law, and what it "

@@ -25,6 +25,10 @@ struct FigureView {
 // A table as a GitHub-flavoured Markdown table ('|' escaped, newlines folded).
 [[nodiscard]] std::string markdown_table(const Table& table);
 
+// The "Work-precision" section: per case the plot, the summary table and
+// every rung, then the sweep's provenance.
+[[nodiscard]] std::string work_precision_markdown(const Report& report);
+
 // The whole report.md; figures are referenced by figure_views' file names.
 [[nodiscard]] std::string report_markdown(const Report& report);
 

@@ -77,6 +77,31 @@ struct CaseSection {
   std::vector<Figure> figures;
 };
 
+// one series of a work-precision plot: an engine (or one integrator of the
+// reference) over its ladder, the rungs with a positive finite error only
+struct WorkPrecisionSeries {
+  std::string name;                 // "mujoco", "reference_rk45", "reference_fixed"
+  std::string engine;               // for its colour: "mujoco", "reference"
+  bool dashed = false;              // a second series of the same engine
+  std::vector<double> wall_s;       // s
+  std::vector<double> error_m;      // m
+  std::vector<std::string> labels;  // each point's knob, e.g. "dt=1e-4"
+  int default_index = -1;           // the point at the engine's default setting, -1 if none
+};
+
+// the work-precision section of one case (`planarbench sweep`)
+struct WorkPrecisionCase {
+  std::string name;   // the case
+  std::string id;     // file-name safe, e.g. "falling_ball_work_precision"
+  std::string truth;  // what the errors are measured against
+  std::string truth_note;
+  std::vector<WorkPrecisionSeries> series;
+  std::vector<double> targets_m;         // m, error levels drawn and tabulated
+  std::vector<std::string> not_plotted;  // "box2d dt=1e-3: diverged ..."
+  Table summary;                         // time to each target, cost per simulated s
+  Table rungs;                           // every rung
+};
+
 struct Report {
   std::string results_file;                                     // as given on the command line
   std::string thresholds_file;                                  // "" when none
@@ -86,6 +111,10 @@ struct Report {
   std::vector<CaseSection> cases;
   std::vector<Table> tables;  // capability, timings, metrics, checks, provenance
   std::vector<MappingEntry> mappings;
+  std::string sweep_file;           // "" when no --sweep
+  std::string work_precision_note;  // how the sweep was made and read
+  std::vector<WorkPrecisionCase> work_precision;
+  Table sweep_provenance;  // /parameters of the sweep file
 };
 
 }  // namespace pb::internal

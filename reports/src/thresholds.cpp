@@ -2,10 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <set>
 #include <toml++/toml.h>
 
+#include "planarbench/did_you_mean.hpp"
 #include "planarbench/errors.hpp"
 
 namespace pb {
@@ -21,6 +25,17 @@ const std::set<std::string>& metric_names() {
 }
 
 int line_of(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
+
+// a value as quoted in messages: 1e-06, "abc", true, an array of 2, a table
+std::string describe(const toml::node& n) {
+  if (const auto* v = n.as_integer()) return fmt::format("{}", v->get());
+  if (const auto* v = n.as_floating_point()) return fmt::format("{}", v->get());
+  if (const auto* v = n.as_boolean()) return v->get() ? "true" : "false";
+  if (const auto* v = n.as_string()) return fmt::format("\"{}\"", v->get());
+  if (const auto* v = n.as_array()) return fmt::format("an array of {}", v->size());
+  if (n.is_table()) return "a table";
+  return "a date/time";
+}
 
 std::string xml_escaped(const std::string& s) {
   std::string out;
@@ -48,6 +63,18 @@ std::string test_name(const CheckOutcome& o) {
 
 std::vector<Threshold> load_thresholds(const std::filesystem::path& path) {
   const std::string file = path.string();
+  // a thresholds file is a few hundred lines; anything past this is not one
+  constexpr std::uintmax_t kMaxBytes = 1u << 20;  // 1 MiB
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(file, 0, "", "no such thresholds file");
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw InputError(file, 0, "", "is not a regular file; give a thresholds file (TOML)");
+  }
+  if (const auto bytes = std::filesystem::file_size(path, ec); !ec && bytes > kMaxBytes) {
+    throw InputError(file, 0, "",
+                     fmt::format("is {} bytes; a thresholds file has at most {} bytes (1 MiB)",
+                                 bytes, kMaxBytes));
+  }
   toml::table doc;
   try {
     doc = toml::parse_file(file);
@@ -58,43 +85,58 @@ std::vector<Threshold> load_thresholds(const std::filesystem::path& path) {
   for (const auto& [key, node] : doc) {
     if (key.str() != "threshold") {
       throw InputError(file, line_of(node), std::string(key.str()),
-                       "unknown key; a thresholds file holds [[threshold]] entries only");
+                       fmt::format("unknown key{}; a thresholds file holds [[threshold]] entries "
+                                   "only",
+                                   did_you_mean(key.str(), {"threshold"})));
     }
   }
-  const toml::array* arr = doc["threshold"].as_array();
+  const toml::node* entries = doc.get("threshold");
+  const toml::array* arr = entries != nullptr ? entries->as_array() : nullptr;
   if (arr == nullptr) {
-    throw InputError(file, 0, "threshold", "expected [[threshold]] entries");
+    throw InputError(file, entries != nullptr ? line_of(*entries) : 0, "threshold",
+                     entries != nullptr
+                         ? fmt::format("must be [[threshold]] entries (got {})", describe(*entries))
+                         : std::string("no [[threshold]] entries: give at least one"));
   }
+  static const std::vector<std::string> allowed = {"case",    "engine", "against", "metric",
+                                                   "episode", "atol",   "rtol",    "why"};
+  const std::vector<std::string> metrics(metric_names().begin(), metric_names().end());
   std::vector<Threshold> out;
   for (std::size_t i = 0; i < arr->size(); ++i) {
     const toml::table* t = (*arr)[i].as_table();
     const std::string where = fmt::format("threshold[{}]", i);
-    if (t == nullptr) throw InputError(file, line_of((*arr)[i]), where, "must be a table");
+    if (t == nullptr) {
+      throw InputError(file, line_of((*arr)[i]), where,
+                       fmt::format("must be a table (got {})", describe((*arr)[i])));
+    }
     Threshold th;
     th.line = line_of(*t);
-    static const std::set<std::string> allowed = {"case", "engine", "against", "metric",
-                                                  "episode", "atol", "rtol", "why"};
     for (const auto& [key, node] : *t) {
-      if (allowed.count(std::string(key.str())) == 0) {
-        throw InputError(file, line_of(node), where + "." + std::string(key.str()),
-                         "unknown key; allowed: case, engine, against, metric, episode, atol, "
-                         "rtol, why");
+      const std::string k(key.str());
+      if (std::find(allowed.begin(), allowed.end(), k) == allowed.end()) {
+        throw InputError(file, line_of(node), where + "." + k,
+                         fmt::format("unknown key{}; allowed: {}", did_you_mean(k, allowed),
+                                     join_words(allowed)));
       }
     }
     auto text = [&](const char* key, std::string& dst) {
       const auto* n = t->get(key);
-      if (n == nullptr || !n->is_string() || n->as_string()->get().empty()) {
-        throw InputError(file, n ? line_of(*n) : th.line, where + "." + key,
-                         "required: a non-empty string");
+      if (n == nullptr) {
+        throw InputError(file, th.line, where + "." + key, "missing; give a non-empty string");
+      }
+      if (!n->is_string() || n->as_string()->get().empty()) {
+        throw InputError(file, line_of(*n), where + "." + key,
+                         fmt::format("must be a non-empty string (got {})", describe(*n)));
       }
       dst = n->as_string()->get();
     };
     auto number = [&](const char* key, double& dst) {
       const auto* n = t->get(key);
       if (n == nullptr) return;
-      const auto v = n->value<double>();
+      const auto v = n->is_number() ? n->value<double>() : std::nullopt;
       if (!v || !std::isfinite(*v) || *v < 0.0) {
-        throw InputError(file, line_of(*n), where + "." + key, "must be a finite number >= 0");
+        throw InputError(file, line_of(*n), where + "." + key,
+                         fmt::format("must be a finite number >= 0 (got {})", describe(*n)));
       }
       dst = *v;
     };
@@ -107,17 +149,32 @@ std::vector<Threshold> load_thresholds(const std::filesystem::path& path) {
     number("rtol", th.rtol);
     if (metric_names().count(th.metric) == 0) {
       throw InputError(file, line_of(*t->get("metric")), where + ".metric",
-                       fmt::format("unknown metric '{}' (SPEC §4 names)", th.metric));
+                       fmt::format("unknown metric '{}'{}; allowed (SPEC §4): {}", th.metric,
+                                   did_you_mean(th.metric, metrics), join_words(metrics)));
     }
     if (t->get("atol") == nullptr && t->get("rtol") == nullptr) {
-      throw InputError(file, th.line, where, "needs atol, rtol or both");
+      throw InputError(file, th.line, where, "has no tolerance; give atol, rtol or both (>= 0)");
     }
     if (const auto* n = t->get("episode")) {
-      const auto v = n->value<int64_t>();
-      if (!n->is_integer() || !v || *v < 0 || *v > 1000000) {
-        throw InputError(file, line_of(*n), where + ".episode", "must be an integer >= 0");
+      constexpr std::int64_t kMaxEpisode = 1000000;
+      const auto* v = n->as_integer();
+      if (v == nullptr || v->get() < 0 || v->get() > kMaxEpisode) {
+        throw InputError(file, line_of(*n), where + ".episode",
+                         fmt::format("must be an integer in [0, {}] (got {})", kMaxEpisode,
+                                     describe(*n)));
       }
-      th.episode = static_cast<int>(*v);
+      th.episode = static_cast<int>(v->get());
+    }
+    // the same check twice is a copy-paste slip, and the two could disagree
+    for (std::size_t j = 0; j < out.size(); ++j) {
+      const Threshold& o = out[j];
+      if (o.case_name == th.case_name && o.engine == th.engine && o.against == th.against &&
+          o.metric == th.metric && o.episode == th.episode) {
+        throw InputError(file, th.line, where,
+                         fmt::format("repeats threshold[{}] (line {}): the same case, engine, "
+                                     "against, metric and episode; keep one",
+                                     j, o.line));
+      }
     }
     out.push_back(th);
   }

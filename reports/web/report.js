@@ -31,7 +31,8 @@
   function renderHeader() {
     const h = document.getElementById('pb-header');
     h.appendChild(el('h1', {}, 'planarbench report'));
-    h.appendChild(el('p', {}, 'Results file: ', el('code', {}, data.results_file)));
+    if (data.results_file) h.appendChild(el('p', {}, 'Results file: ', el('code', {}, data.results_file)));
+    if (data.sweep_file) h.appendChild(el('p', {}, 'Sweep file: ', el('code', {}, data.sweep_file)));
     if (data.thresholds_file) {
       h.appendChild(el('p', {}, 'Thresholds: ', el('code', {}, data.thresholds_file)));
     }
@@ -44,13 +45,16 @@
     const bits = ['utc_time', 'build_revision', 'host'].filter((k) => prov[k])
       .map((k) => k + ' ' + prov[k]);
     if (bits.length) h.appendChild(el('p', {}, 'Run: ' + bits.join(', ')));
-    h.appendChild(el('p', { class: 'note' }, data.downsampling +
-      ' Drag across a plot to zoom in time, double-click to zoom out; click a legend entry to hide or show its series.'));
+    if (data.results_file) {
+      h.appendChild(el('p', { class: 'note' }, data.downsampling +
+        ' Drag across a plot to zoom in time, double-click to zoom out; click a legend entry to hide or show its series.'));
+    }
 
     const nav = document.getElementById('pb-nav');
     for (const c of data.cases) nav.appendChild(el('a', { href: '#case-' + slug(c.name) }, c.name));
+    if (hasWorkPrecision()) nav.appendChild(el('a', { href: '#work-precision' }, 'Work-precision'));
     for (const t of data.tables) nav.appendChild(el('a', { href: '#table-' + slug(t.id) }, t.title));
-    nav.appendChild(el('a', { href: '#mapping' }, 'Parameter mapping'));
+    if (data.results_file) nav.appendChild(el('a', { href: '#mapping' }, 'Parameter mapping'));
   }
 
   // ---- figures -------------------------------------------------------------
@@ -180,9 +184,9 @@
   }
 
   // ---- tables --------------------------------------------------------------
-  function renderTable(t, main) {
+  function renderTable(t, main, heading) {
     const sec = el('section', { id: 'table-' + slug(t.id) });
-    sec.appendChild(el('h2', {}, t.title));
+    sec.appendChild(el(heading || 'h2', {}, t.title));
     if (t.note) sec.appendChild(el('p', { class: 'note' }, t.note));
     if (!t.rows.length) {
       sec.appendChild(el('p', {}, '(none)'));
@@ -233,6 +237,45 @@
     main.appendChild(sec);
   }
 
+  // ---- work-precision (planarbench sweep) -----------------------------------
+  function hasWorkPrecision() {
+    return Boolean(data.work_precision && data.work_precision.cases.length);
+  }
+
+  // The plots are SVG documents the report wrote itself (report_work_precision_svg.cpp,
+  // every text XML-escaped, no scripts): parsed as XML, never as HTML.
+  function svgNode(text) {
+    const doc = new DOMParser().parseFromString(text, 'image/svg+xml');
+    if (doc.getElementsByTagName('parsererror').length) return el('p', { class: 'note' }, 'plot unreadable');
+    return document.importNode(doc.documentElement, true);
+  }
+
+  function renderWorkPrecision(main) {
+    if (!hasWorkPrecision()) return;
+    const wp = data.work_precision;
+    const sec = el('section', { id: 'work-precision' });
+    sec.appendChild(el('h2', {}, 'Work-precision'));
+    sec.appendChild(el('p', { class: 'note' }, wp.note));
+    for (const c of wp.cases) {
+      const box = el('div', { class: 'wp-case', id: 'wp-' + slug(c.name) });
+      box.appendChild(el('h3', {}, c.name));
+      box.appendChild(el('p', { class: 'case-meta' }, 'Truth: ' + c.truth +
+        (c.truth_note ? ' (' + c.truth_note + ')' : '') + '.'));
+      box.appendChild(el('div', { class: 'wp-plot' }, svgNode(c.svg)));
+      renderTable(c.summary, box, 'h4');
+      if (c.not_plotted.length) {
+        box.appendChild(el('details', {}, el('summary', {}, 'Not plotted (' + c.not_plotted.length + ')'),
+          el('ul', {}, ...c.not_plotted.map((n) => el('li', {}, n)))));
+      }
+      const rungs = el('details', {}, el('summary', {}, 'Every rung (' + c.rungs.rows.length + ')'));
+      renderTable(c.rungs, rungs, 'h4');
+      box.appendChild(rungs);
+      sec.appendChild(box);
+    }
+    if (wp.provenance.rows.length) renderTable(wp.provenance, sec, 'h3');
+    main.appendChild(sec);
+  }
+
   // ---- parameter mapping ---------------------------------------------------
   function jsonNode(v) {
     if (v === null || typeof v !== 'object') return document.createTextNode(String(v));
@@ -273,8 +316,9 @@
   const main = document.getElementById('pb-main');
   main.removeChild(document.getElementById('pb-loading'));
   renderCases(main);
+  renderWorkPrecision(main);
   for (const t of data.tables) renderTable(t, main);
-  renderMappings(main);
+  if (data.results_file) renderMappings(main);
 
   let resizeTimer = null;
   window.addEventListener('resize', () => {

@@ -8,6 +8,9 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include <filesystem>
+#include <string>
+
 #include "planarbench/errors.hpp"
 #include "planarbench/results_file.hpp"
 #include "report_files.hpp"
@@ -21,7 +24,9 @@ namespace fs = std::filesystem;
 class ReportTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / "pb_report_test";
+    // one folder per test process: CTest runs the tests of this fixture in parallel
+    dir_ = fs::temp_directory_path() / (std::string("pb_report_test_") +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     internal::ensure_directory(dir_ / "web" / "node_modules" / "uplot" / "dist");
     const fs::path u = dir_ / "web" / "node_modules" / "uplot";

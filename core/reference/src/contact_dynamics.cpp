@@ -7,7 +7,7 @@
 
 namespace pb {
 
-ContactDynamics::ContactDynamics(const Case& c, GeometryMode mode)
+ContactDynamics::ContactDynamics(const Case& c, GeometryMode mode, DetectionMode detection)
     : model_(c), pairs_(c.contacts) {
   const int nb = static_cast<int>(c.bodies.size());
   for (const auto& p : pairs_) {
@@ -16,7 +16,7 @@ ContactDynamics::ContactDynamics(const Case& c, GeometryMode mode)
     }
     geometry_.push_back(std::make_unique<PairGeometry>(c.bodies[static_cast<std::size_t>(p.body_a)],
                                                        c.bodies[static_cast<std::size_t>(p.body_b)],
-                                                       mode));
+                                                       mode, detection));
   }
   modes_.assign(pairs_.size(), PairMode{});
   last_.assign(pairs_.size(), PairEvaluation{});

@@ -6,6 +6,7 @@
 #include <utility>
 #include <variant>
 
+#include "outline_kernels.hpp"
 #include "planarbench/outline.hpp"
 
 namespace pb {
@@ -35,49 +36,16 @@ double point_segment_distance2(double px, double py, double s0x, double s0y, dou
   return rx * rx + ry * ry;
 }
 
-// the geometry of the chosen candidate: its boundary point, the outward
-// normal of the boundary feature there, and the a -> b orientation
+// the geometry of the chosen candidate (outline_kernels.hpp)
 ContactGeometry candidate_geometry(const Candidate& c, const WorldOutline& a,
                                    const WorldOutline& b, bool overlapping) {
   const WorldOutline& own = c.of_a ? a : b;
   const WorldOutline& other = c.of_a ? b : a;
   const Vec2 p(own.x[c.vertex], own.y[c.vertex]);
-  const int e = c.hit.edge;
-  const Vec2 q(other.x[e] + c.hit.t * other.ex[e], other.y[e] + c.hit.t * other.ey[e]);
-
-  // outward normal of `other` at q
-  Vec2 m;
-  if (c.hit.t > 0.0 && c.hit.t < 1.0) {
-    m = Vec2(other.nx[e], other.ny[e]);
-  } else {
-    const Vec2 d = p - q;
-    const double len = d.norm();
-    // below this the direction between the points is rounding noise
-    const double tiny = 1e-12 * (1.0 + p.norm());
-    if (len > tiny) {
-      m = overlapping ? Vec2(-d / len) : Vec2(d / len);
-    } else {
-      const int n = other.size();
-      const int v = c.hit.t <= 0.0 ? e : (e + 1) % n;
-      const int before = (v + n - 1) % n;
-      m = Vec2(other.nx[v] + other.nx[before], other.ny[v] + other.ny[before]);
-      m = m.norm() > 0.0 ? Vec2(m.normalized()) : Vec2(other.nx[v], other.ny[v]);
-    }
-  }
-
-  ContactGeometry g;
-  g.gap_m = overlapping ? -c.hit.distance_m : c.hit.distance_m;
-  if (c.of_a) {
-    // p on a, q on b: m is b's outward normal, so a -> b is -m
-    g.normal = -m;
-    g.point_a_m = p;
-    g.point_b_m = q;
-  } else {
-    g.normal = m;
-    g.point_a_m = q;
-    g.point_b_m = p;
-  }
-  return g;
+  return internal::hit_geometry(p, c.hit, c.of_a, overlapping, other.size(), [&](int e) {
+    return internal::EdgeView{other.x[e], other.y[e], other.ex[e], other.ey[e],
+                              Vec2(other.nx[e], other.ny[e])};
+  });
 }
 
 // every outline point of `own` against the boundary of `other`; `deepest_own`
@@ -104,39 +72,12 @@ void sweep(const WorldOutline& own, const WorldOutline& other, bool own_is_a,
   }
 }
 
-// the run of consecutive inside points around one of them: how many, and
-// their depth-weighted centroid
-struct Run {
-  int points = 0;
-  Vec2 centroid_m = Vec2::Zero();
-};
-
-Run inside_run(const WorldOutline& own, const std::vector<BoundaryHit>& hits, int start) {
-  Run r;
-  if (start < 0) return r;
-  const int n = own.size();
-  double w_sum = 0.0;
-  Vec2 p_sum = Vec2::Zero();
-  auto add = [&](int i) {
-    const double w = hits[static_cast<std::size_t>(i)].distance_m;
-    w_sum += w;
-    p_sum += w * Vec2(own.x[i], own.y[i]);
-    ++r.points;
-  };
-  add(start);
-  int back = 1;
-  for (; back < n; ++back) {
-    const int i = (start - back + n) % n;
-    if (!hits[static_cast<std::size_t>(i)].inside) break;
-    add(i);
-  }
-  for (int fwd = 1; fwd < n - back + 1; ++fwd) {
-    const int i = (start + fwd) % n;
-    if (!hits[static_cast<std::size_t>(i)].inside) break;
-    add(i);
-  }
-  r.centroid_m = w_sum > 0.0 ? Vec2(p_sum / w_sum) : Vec2(own.x[start], own.y[start]);
-  return r;
+// the run of consecutive inside points around `start` (outline_kernels.hpp)
+internal::Run inside_run(const WorldOutline& own, const std::vector<BoundaryHit>& hits, int start) {
+  return internal::inside_run(
+      own.size(), start, [&](int i) { return hits[static_cast<std::size_t>(i)].inside; },
+      [&](int i) { return hits[static_cast<std::size_t>(i)].distance_m; },
+      [&](int i) { return Vec2(own.x[i], own.y[i]); });
 }
 
 }  // namespace
@@ -163,7 +104,7 @@ void place_outline(const std::vector<Vec2>& local_m, const Pose& pose, WorldOutl
   out.x_per_y.resize(n);
   const Eigen::Matrix2d r = pose.rotation();
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 w = pose.position_m + r * local_m[i];
+    const Vec2 w = internal::place_point(r, pose.position_m, local_m[i]);
     out.x[i] = w.x();
     out.y[i] = w.y();
   }
@@ -176,17 +117,14 @@ void place_outline(const std::vector<Vec2>& local_m, const Pose& pose, WorldOutl
   out.min_y = *ymin;
   out.max_y = *ymax;
   for (std::size_t i = 0; i < n; ++i) {
-    const double ex = out.x[i + 1] - out.x[i];
-    const double ey = out.y[i + 1] - out.y[i];
-    const double len2 = ex * ex + ey * ey;
-    out.ex[i] = ex;
-    out.ey[i] = ey;
-    out.inv_len2[i] = len2 > 0.0 ? 1.0 / len2 : 0.0;
-    out.x_per_y[i] = ey != 0.0 ? ex / ey : 0.0;
-    // counter-clockwise: the interior is on the left, the outward normal on the right
-    const double len = std::sqrt(len2);
-    out.nx[i] = len > 0.0 ? ey / len : 0.0;
-    out.ny[i] = len > 0.0 ? -ex / len : 0.0;
+    const internal::EdgeData e = internal::edge_data(out.x[i], out.y[i], out.x[i + 1], out.y[i + 1]);
+    out.ex[i] = e.ex;
+    out.ey[i] = e.ey;
+    out.inv_len2[i] = e.inv_len2;
+    out.x_per_y[i] = e.x_per_y;
+    const Vec2 normal = internal::edge_outward_normal(e.ex, e.ey);
+    out.nx[i] = normal.x();
+    out.ny[i] = normal.y();
   }
 }
 
@@ -200,23 +138,16 @@ BoundaryHit nearest_boundary_point(double px, double py, const WorldOutline& pol
   bool inside = false;
   for (int j = 0; j < n; ++j) {
     // projection onto edge j, clamped to the edge
-    const double dx = px - x[j];
-    const double dy = py - y[j];
-    const double ex = poly.ex[j];
-    const double ey = poly.ey[j];
-    const double t = std::clamp((dx * ex + dy * ey) * poly.inv_len2[j], 0.0, 1.0);
-    const double rx = dx - t * ex;
-    const double ry = dy - t * ey;
-    const double d2 = rx * rx + ry * ry;
+    double t = 0.0;
+    const double d2 = internal::point_edge_distance2(px, py, x[j], y[j], poly.ex[j], poly.ey[j],
+                                                     poly.inv_len2[j], t);
     if (d2 < best2) {
       best2 = d2;
       best_edge = j;
       best_t = t;
     }
     // crossing number: a ray from p towards +x crosses edge j
-    if ((y[j] > py) != (y[j + 1] > py) && px < x[j] + (py - y[j]) * poly.x_per_y[j]) {
-      inside = !inside;
-    }
+    if (internal::ray_crosses_edge(px, py, x[j], y[j], y[j + 1], poly.x_per_y[j])) inside = !inside;
   }
   return BoundaryHit{std::sqrt(best2), best_edge, best_t, inside};
 }
@@ -262,8 +193,8 @@ ContactGeometry OutlineContactSearch::evaluate_placed(const WorldOutline& a,
   ContactGeometry g = candidate_geometry(a_deepest ? deepest_a : deepest_b, a, b, true);
   const double delta = -g.gap_m;
   // line of action through the centroid of the longer run of inside points
-  const Run run_a = inside_run(a, hits_a_, deepest_a.vertex);
-  const Run run_b = inside_run(b, hits_b_, deepest_b.vertex);
+  const internal::Run run_a = inside_run(a, hits_a_, deepest_a.vertex);
+  const internal::Run run_b = inside_run(b, hits_b_, deepest_b.vertex);
   const bool use_a = run_a.points > run_b.points || (run_a.points == run_b.points && a_deepest);
   if (use_a) {
     g.point_a_m = run_a.centroid_m;

@@ -35,18 +35,25 @@ bool PairGeometry::supported(const Body& a, const Body& b, GeometryMode mode,
   return true;
 }
 
-PairGeometry::PairGeometry(const Body& a, const Body& b, GeometryMode mode) {
+PairGeometry::PairGeometry(const Body& a, const Body& b, GeometryMode mode,
+                           DetectionMode detection) {
   std::string reason;
   if (!supported(a, b, mode, &reason)) throw std::invalid_argument(reason);
   if (mode == GeometryMode::outline || both_polygons(a, b)) {
-    outline_.emplace(contact_outline(a.shape, a.outline_points),
-                     contact_outline(b.shape, b.outline_points));
+    if (detection == DetectionMode::fast) {
+      fast_.emplace(contact_outline(a.shape, a.outline_points),
+                    contact_outline(b.shape, b.outline_points));
+    } else {
+      outline_.emplace(contact_outline(a.shape, a.outline_points),
+                       contact_outline(b.shape, b.outline_points));
+    }
   } else {
     exact_.emplace(a.shape, b.shape);
   }
 }
 
 ContactGeometry PairGeometry::evaluate(const Pose& pose_a, const Pose& pose_b) {
+  if (fast_) return fast_->evaluate(pose_a, pose_b);
   return outline_ ? outline_->evaluate(pose_a, pose_b) : exact_->evaluate(pose_a, pose_b);
 }
 

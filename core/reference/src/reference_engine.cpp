@@ -93,8 +93,9 @@ class ReferenceEngine final : public Engine {
     m["geometry"] =
         settings_.geometry == "exact"
             ? "exact: true circle / ellipse / infinite line / polygon (exact_contact.hpp)"
-            : "outline: the paper's outline points (§2.1.1), exhaustive point-to-edge search; "
-              "half-plane = its surface segment of outline_points points";
+            : "outline: the paper's outline points (§2.1.1), every point against the other "
+              "outline's edges (detection=brute: exhaustively; detection=fast: bounding-volume "
+              "trees, the same result); half-plane = its surface segment of outline_points points";
     m["outline_points"] = outline_points_;
     m["contact_model"] =
         "one contact per pair at the deepest point; with several overlap regions only the "
@@ -114,6 +115,7 @@ class ReferenceEngine final : public Engine {
         "the accepted steps, between each pendulum's anchor point reconstructed from its state "
         "and its world pivot (rounding only)";
     x["geometry"] = settings_.geometry;
+    x["detection"] = settings_.detection;
     x["integrator"] = settings_.integrator;
     x["rhs_evaluations"] = s.rhs_evaluations;
     x["rejected_steps"] = s.rejected;

@@ -8,6 +8,10 @@ void bind_reference_settings(SettingsBinder& binder, ReferenceSettings& s) {
               "contact geometry: outline = the paper's outline points (case outline_points, "
               "paper §2.1.1); exact = true circle/ellipse/line, to separate the outline "
               "discretisation error. Default outline")
+      .choice("detection", &s.detection, {"fast", "brute"},
+              "outline contact search: fast = bounding-volume trees, O(log N) per evaluation "
+              "apart, the same result as brute; brute = every point against every edge, O(N M), "
+              "the oracle. Default fast")
       .choice("integrator", &s.integrator, {"rk45", "paper", "fixed"},
               "rk45 = Dormand-Prince 5(4) with error control (rtol, atol) and located events; "
               "paper = RK4 with the paper's gap-driven step (§3.1: h = gap_safety * gap / "

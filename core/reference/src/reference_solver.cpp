@@ -35,6 +35,12 @@ GeometryMode parse_geometry(const std::string& s) {
   throw std::invalid_argument("reference.geometry: unknown geometry '" + s + "'");
 }
 
+DetectionMode parse_detection(const std::string& s) {
+  if (s == "fast") return DetectionMode::fast;
+  if (s == "brute") return DetectionMode::brute;
+  throw std::invalid_argument("reference.detection: unknown detection '" + s + "'");
+}
+
 bool declared(const PairMode& m) { return m.phase != ContactPhase::apart; }
 
 // maximises f on [a, b] by golden-section search; returns the best value seen
@@ -69,7 +75,7 @@ double golden_max(F&& f, double a, double b, double best) {
 }  // namespace
 
 ReferenceSolver::ReferenceSolver(const Case& c, const ReferenceSettings& s)
-    : sys_(c, parse_geometry(s.geometry)),
+    : sys_(c, parse_geometry(s.geometry), parse_detection(s.detection)),
       settings_(s),
       kind_(parse_integrator(s.integrator)),
       root_method_(kind_ == IntegratorKind::paper ? RootMethod::bisection : RootMethod::illinois),

@@ -3,7 +3,8 @@
 // embedded), DIR/report.md and DIR/figures/*.svg (static figures): the paper's
 // figures with the truth and every engine overlaid, every metric with its
 // pass/fail against a thresholds file, the parameter mapping of each engine,
-// the capability matrix, timings and provenance.
+// the capability matrix, timings and provenance; with a sweep file, the
+// work-precision plots and tables of each case.
 #pragma once
 
 #include <cstddef>
@@ -13,7 +14,10 @@
 namespace pb {
 
 struct ReportOptions {
-  std::filesystem::path results;     // results file written by `planarbench run`
+  std::filesystem::path results;     // results file written by `planarbench run`; empty: none
+  // sweep file written by `planarbench sweep`: adds the work-precision section;
+  // empty: none (one of results and sweep must be given)
+  std::filesystem::path sweep;
   std::filesystem::path out_dir;     // created when missing
   std::filesystem::path thresholds;  // empty: no pass/fail column
   // folder with report_template.html, report.js, report.css and
@@ -31,10 +35,11 @@ struct ReportSummary {
   std::size_t metrics = 0;         // metric rows
   std::size_t checks = 0;          // checked (threshold, metric) pairs
   std::size_t checks_failed = 0;
+  std::size_t work_precision_cases = 0;  // cases of the sweep file
 };
 
 // Writes the report. Throws InputError (exit 2) for a missing or foreign
-// results file, a bad thresholds file, missing web assets (the message says
+// results or sweep file (or neither given), a bad thresholds file, missing web assets (the message says
 // to run scripts/setup_web.sh) or an output folder that cannot be written.
 // Every file is written to a temporary name and renamed.
 ReportSummary write_report(const ReportOptions& options);

@@ -47,7 +47,7 @@ struct PairEvaluation {
 class ContactDynamics final : public OdeSystem {
  public:
   // throws std::invalid_argument for what the model or the geometry cannot do
-  ContactDynamics(const Case& c, GeometryMode mode);
+  ContactDynamics(const Case& c, GeometryMode mode, DetectionMode detection = DetectionMode::fast);
 
   [[nodiscard]] int coordinates() const { return model_.coordinates(); }
   [[nodiscard]] int pair_count() const { return static_cast<int>(pairs_.size()); }

@@ -1,6 +1,9 @@
 // Contact detection on outlines, brute force (paper §2.1.1, Fig. 1). This is
-// the faithful O(N M) search; a faster search may replace it in the engine
-// later and must then agree with it (it is the oracle).
+// the faithful O(N M) search and the oracle: the engine's default search,
+// FastOutlineContactSearch (fast_outline_contact.hpp, setting detection =
+// fast), returns the same result and is tested against this one; this one
+// stays selectable with detection = brute. Both share their arithmetic
+// (src/outline_kernels.hpp).
 //
 // What the paper does. Every body is a closed list of outline points. First
 // the pair of points (one on each body) with the least distance is found;

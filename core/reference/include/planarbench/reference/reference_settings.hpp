@@ -11,6 +11,10 @@ struct ReferenceSettings {
   // contact geometry: "outline" (the paper's outline points, §2.1.1) or
   // "exact" (true circle / ellipse / line, to separate the outline error)
   std::string geometry = "outline";
+  // outline contact search: "fast" (bounding-volume trees, exact: the same
+  // result as the brute force; fast_outline_contact.hpp) or "brute" (the
+  // O(N M) brute force, the oracle; outline_contact.hpp)
+  std::string detection = "fast";
   // "rk45": Dormand-Prince 5(4), error-controlled, located events (default:
   //   the truth at tight tolerance);
   // "paper": RK4 with the paper's gap-driven step (§3.1), fixed contact_dt in contact;

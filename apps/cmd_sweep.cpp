@@ -1,0 +1,389 @@
+// planarbench sweep: each engine over a ladder of step sizes (the reference
+// also over rk45 tolerances), the position error of every rung against the
+// case's truth and its wall time, into one HDF5 work-precision file.
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "planarbench/case_loader.hpp"
+#include "planarbench/engines.hpp"
+#include "planarbench/errors.hpp"
+#include "planarbench/reports/metrics.hpp"
+#include "planarbench/runner.hpp"
+#include "planarbench/sweep_file.hpp"
+#include "sweep_error.hpp"
+#include "sweep_plan.hpp"
+#include "task_scheduler.hpp"
+
+namespace pb::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct SweepOptionsCli {
+  std::string case_spec;
+  std::string engine_spec;
+  std::string out;
+  std::vector<std::string> set;
+  std::string dt_ladder;
+  int jobs = 1;
+  int repeat = 1;
+  bool quick = false;
+  bool quiet = false;
+  std::string cases_dir;
+};
+
+// one case of the sweep, everything loaded and planned before anything runs
+struct CasePlan {
+  Case c;
+  SettingsOverrides base;  // the case's [settings] under the --set engine keys
+  TruthPlan truth;
+  std::vector<SeriesPlan> series;
+  std::vector<double> defaults;  // the knob's default value per series
+};
+
+// one rung to run: (case, series, rung)
+struct RungTask {
+  std::size_t case_index = 0;
+  std::size_t series_index = 0;
+  std::size_t rung_index = 0;
+};
+
+// progress lines on stderr, one at the start and one at the end of each run
+class Progress {
+ public:
+  Progress(bool quiet, std::size_t total) : quiet_(quiet), total_(total) {}
+  void print(std::size_t i, const std::string& line) {
+    if (quiet_) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, total_, line.c_str());
+  }
+
+ private:
+  bool quiet_;
+  std::size_t total_;
+  std::mutex mutex_;
+};
+
+// the --out target must be writable before minutes are spent computing it
+void check_out_path(const fs::path& path) {
+  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) {
+    throw InputError("--out", 0, "", fmt::format("directory '{}' does not exist", dir.string()));
+  }
+  if (::access(dir.c_str(), W_OK) != 0) {
+    throw InputError("--out", 0, "", fmt::format("directory '{}' is not writable", dir.string()));
+  }
+  if (path.filename().empty() || fs::is_directory(path, ec)) {
+    throw InputError("--out", 0, "", fmt::format("'{}' is a directory, not a file", path.string()));
+  }
+}
+
+// `base` with a settings list on top (the truth's own settings win)
+SettingsOverrides overrides_of(const std::vector<std::pair<std::string, std::string>>& settings,
+                               const SettingsOverrides& base) {
+  SettingsOverrides out = base;
+  for (const auto& [k, v] : settings) out.set(k, v, SettingSource{"sweep truth", 0});
+  return out;
+}
+
+std::string rung_label(const SeriesPlan& s, double value) {
+  return fmt::format("{} {}={:g}", s.name, s.knob, value);
+}
+
+// runs fn(i) for every task i of `plan` on `jobs` threads, longest first;
+// Box2D runs are serialised (task_scheduler.hpp); the first exception wins
+template <typename Fn>
+void run_parallel(const std::vector<SchedulerTask>& plan, int jobs, Fn fn) {
+  TaskScheduler scheduler(plan);
+  std::mutex error_mutex;
+  std::exception_ptr first_error;
+  auto worker = [&] {
+    while (const auto next = scheduler.acquire()) {
+      try {
+        fn(*next);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(error_mutex);
+        if (!first_error) first_error = std::current_exception();
+        scheduler.cancel();
+      }
+      scheduler.release(*next);
+    }
+  };
+  const int n_threads = std::min<int>(jobs, static_cast<int>(plan.size()));
+  std::vector<std::thread> threads;
+  for (int t = 1; t < n_threads; ++t) threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads) t.join();
+  if (first_error) std::rethrow_exception(first_error);
+}
+
+std::vector<fs::path> case_paths(const std::string& spec, const std::string& dir_option) {
+  std::vector<fs::path> paths;
+  for (std::size_t start = 0; start <= spec.size();) {
+    const auto comma = spec.find(',', start);
+    const auto item =
+        spec.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    for (auto& p : resolve_cases(item, cases_dir(dir_option))) paths.push_back(std::move(p));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return paths;
+}
+
+std::vector<std::string> sweep_engines(const std::string& spec) {
+  std::vector<std::string> out;
+  for (const auto& e : resolve_engines(spec)) {
+    // 'all' means every engine with something to sweep; the truth is not one
+    if (spec == "all" && e == "analytic") continue;
+    out.push_back(e);
+  }
+  return out;
+}
+
+int run_sweep(const SweepOptionsCli& opt, int argc, char** argv) {
+  // ---- options, then every case and rung validated before anything runs ----
+  if (opt.jobs < 1 || opt.jobs > 64) {
+    throw InputError("--jobs", 0, "", fmt::format("must be in [1, 64] (got {})", opt.jobs));
+  }
+  if (opt.repeat < 1 || opt.repeat > 100) {
+    throw InputError("--repeat", 0, "", fmt::format("must be in [1, 100] (got {})", opt.repeat));
+  }
+  std::vector<double> dts =
+      opt.dt_ladder.empty() ? default_dt_ladder() : parse_ladder(opt.dt_ladder, "--dt-ladder");
+  std::vector<double> rtols = default_rtol_ladder();
+  if (opt.quick) {
+    dts = opt.dt_ladder.empty() ? quick_dt_ladder() : two_coarsest(dts);
+    rtols = quick_rtol_ladder();
+  }
+  check_out_path(opt.out);
+  const Overrides overrides = parse_overrides(opt.set);
+  reject_swept_keys(overrides.engine_keys);
+  const auto engines = sweep_engines(opt.engine_spec);
+
+  std::vector<CasePlan> plans;
+  for (const auto& path : case_paths(opt.case_spec, opt.cases_dir)) {
+    CasePlan p;
+    p.c = load_case(path, overrides.case_keys);
+    p.base = engine_settings_for(p.c, overrides.engine_keys);
+    p.truth = truth_for(p.c);
+    for (const auto& e : engines) {
+      for (auto& s : series_for(e, dts, rtols)) {
+        // the knob's value at the engine's defaults under the case and --set
+        auto engine = make_engine(s.engine);
+        engine->settings().apply(p.base);
+        p.defaults.push_back(engine->settings().to_json().at(s.knob).get<double>());
+        // each rung's settings must parse (ranges are the engine's own)
+        for (const double v : s.values) {
+          make_engine(s.engine)->settings().apply(rung_overrides(p.base, s, v));
+        }
+        p.series.push_back(std::move(s));
+      }
+    }
+    plans.push_back(std::move(p));
+  }
+
+  // ---- the truths first: every rung's error is measured against them ----
+  std::vector<RunResult> truths(plans.size());
+  std::vector<std::string> truth_notes(plans.size());
+  std::vector<std::string> truth_labels(plans.size());
+  {
+    Progress progress(opt.quiet, plans.size());
+    std::vector<SchedulerTask> plan;
+    for (const auto& p : plans) plan.push_back(SchedulerTask{p.c.duration_s, ""});
+    run_parallel(plan, opt.jobs, [&](std::size_t i) {
+      const CasePlan& p = plans[i];
+      TruthPlan t = p.truth;
+      progress.print(i, fmt::format("{} truth: {} ...", p.c.name, t.label));
+      auto engine = make_engine(t.engine);
+      RunResult r = run_engine(*engine, p.c, overrides_of(t.settings, p.base));
+      // a closed form that does not run falls back to the reference
+      if (r.status != RunStatus::ok && t.engine == "analytic") {
+        t =
+            reference_truth(fmt::format("the closed form did not run ({}: {}); the reference "
+                                        "at exact geometry and tight tolerance instead",
+                                        run_status_name(r.status), r.reason));
+        engine = make_engine(t.engine);
+        r = run_engine(*engine, p.c, overrides_of(t.settings, p.base));
+      }
+      progress.print(i, fmt::format("{} truth: {} {} ({:.2f} s)", p.c.name, t.label,
+                                    run_status_name(r.status), r.wall_time_s));
+      // the reference truth checked against the closed form where it holds
+      if (t.engine == "reference" && p.c.truth == TruthKind::analytic_until_first_contact &&
+          r.status == RunStatus::ok) {
+        auto analytic = make_engine("analytic");
+        const RunResult a = run_engine(*analytic, p.c, p.base);
+        const double until = a.extra.value("valid_until_s", std::nan(""));
+        if (a.status == RunStatus::ok && std::isfinite(until)) {
+          for (const auto& m : compare_runs(p.c, r, a, "analytic", until)) {
+            if (m.metric == "position_max") {
+              t.note += fmt::format(
+                  "; up to the first contact (t = {:.6g} s) it is within "
+                  "{:.3g} m of the closed form",
+                  until, m.error);
+            }
+          }
+        }
+      }
+      if (r.status != RunStatus::ok) {
+        t.note += fmt::format("; the truth run is {} ({}): no errors", run_status_name(r.status),
+                              r.reason);
+      }
+      truths[i] = std::move(r);
+      truth_notes[i] = t.note;
+      truth_labels[i] = t.label;
+    });
+  }
+
+  // ---- every rung, longest first; errors computed as each run ends ----
+  std::vector<RungTask> tasks;
+  std::vector<SchedulerTask> plan;
+  for (std::size_t ci = 0; ci < plans.size(); ++ci) {
+    for (std::size_t si = 0; si < plans[ci].series.size(); ++si) {
+      const SeriesPlan& s = plans[ci].series[si];
+      for (std::size_t ri = 0; ri < s.values.size(); ++ri) {
+        tasks.push_back(RungTask{ci, si, ri});
+        plan.push_back(SchedulerTask{rung_cost(s, s.values[ri], plans[ci].c.duration_s),
+                                     exclusive_group(s.engine)});
+      }
+    }
+  }
+  std::vector<SweepRung> rungs(tasks.size());
+  Progress progress(opt.quiet, tasks.size());
+  const auto t0 = std::chrono::steady_clock::now();
+  run_parallel(plan, opt.jobs, [&](std::size_t i) {
+    const RungTask& task = tasks[i];
+    const CasePlan& p = plans[task.case_index];
+    const SeriesPlan& s = p.series[task.series_index];
+    const double value = s.values[task.rung_index];
+    const std::string what = fmt::format("{} x {}", p.c.name, rung_label(s, value));
+    progress.print(i, what + " ...");
+    const SettingsOverrides settings = rung_overrides(p.base, s, value);
+    // repeats: the same bits each time (deterministic engines), so the first
+    // run's trajectory gives the error and the median of the wall times the cost
+    std::vector<double> walls;
+    RunResult first;
+    for (int k = 0; k < opt.repeat; ++k) {
+      auto engine = make_engine(s.engine);
+      RunResult r = run_engine(*engine, p.c, settings);
+      walls.push_back(r.wall_time_s);
+      if (k == 0) first = std::move(r);
+    }
+    SweepRung& out = rungs[i];
+    out.value = value;
+    out.wall_time_s = median(walls);
+    out.steps = first.steps;
+    out.status = first.status;
+    out.reason = first.status == RunStatus::ok ? "" : first.reason;
+    if (first.status == RunStatus::diverged && first.diverged_at_s >= 0.0) {
+      out.reason = fmt::format("at t = {:.6g} s: {}", first.diverged_at_s, first.reason);
+    }
+    out.position_error_m = sweep_position_error(p.c, first, truths[task.case_index]);
+    std::string status = run_status_name(out.status);
+    if (out.status != RunStatus::ok) status += ": " + out.reason;
+    progress.print(i, fmt::format("{} {} ({:.3f} s, {} steps, error {:.3g} m)", what, status,
+                                  out.wall_time_s, out.steps, out.position_error_m));
+  });
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  // ---- the file ----
+  SweepFile file;
+  file.provenance = provenance(argc, argv);
+  file.repeat = opt.repeat;
+  file.quick = opt.quick;
+  file.dt_ladder = dts;
+  file.rtol_ladder = rtols;
+  std::size_t diverged = 0;
+  for (std::size_t ci = 0; ci < plans.size(); ++ci) {
+    const CasePlan& p = plans[ci];
+    SweepCase sc;
+    sc.case_name = p.c.name;
+    sc.case_text = p.c.source_text;
+    sc.case_path = p.c.source_path;
+    sc.overrides = overrides.as_given;
+    sc.duration_s = p.c.duration_s;
+    sc.truth = truths[ci].status == RunStatus::ok ? truth_labels[ci] : "none";
+    sc.truth_note = truth_notes[ci];
+    for (std::size_t si = 0; si < p.series.size(); ++si) {
+      const SeriesPlan& s = p.series[si];
+      SweepSeries out;
+      out.name = s.name;
+      out.engine = s.engine;
+      out.knob = s.knob;
+      out.knob_key = s.knob_key;
+      out.knob_unit = s.knob_unit;
+      out.default_value = p.defaults[si];
+      out.fixed_settings = fixed_settings_json(s);
+      for (std::size_t i = 0; i < tasks.size(); ++i) {
+        if (tasks[i].case_index != ci || tasks[i].series_index != si) continue;
+        diverged += rungs[i].status == RunStatus::diverged;
+        out.rungs.push_back(rungs[i]);
+      }
+      sc.series.push_back(std::move(out));
+    }
+    file.cases.push_back(std::move(sc));
+  }
+  write_sweep_file(opt.out, file);
+
+  int truth_failed = 0;
+  for (const auto& t : truths) truth_failed += t.status != RunStatus::ok;
+  if (!opt.quiet) {
+    std::fprintf(stderr, "wrote %s (%zu rungs in %.1f s%s%s)\n", opt.out.c_str(), tasks.size(),
+                 elapsed, diverged ? fmt::format(", {} diverged", diverged).c_str() : "",
+                 truth_failed ? fmt::format(", {} truth runs failed", truth_failed).c_str() : "");
+  }
+  // a diverged rung is a measurement (too coarse a step); a failed truth is not
+  return truth_failed ? kExitEngineFailed : kExitOk;
+}
+
+}  // namespace
+
+Action add_sweep_command(CLI::App& app, int argc, char** argv) {
+  auto opt = std::make_shared<SweepOptionsCli>();
+  auto* cmd = app.add_subcommand(
+      "sweep",
+      "Work-precision sweep: each engine over a ladder of time steps (the reference also over "
+      "rk45 tolerances), the max position error of each rung against the case's truth and its "
+      "wall time, into one HDF5 file (exit 0 even when coarse rungs diverge: that is data)");
+  cmd->add_option("--case", opt->case_spec,
+                  "Case name, path to a case file, a comma-separated list of those, or 'all'")
+      ->required();
+  cmd->add_option("--engine", opt->engine_spec,
+                  "Engine: reference, mujoco, box2d, ode, a comma-separated list, or 'all' "
+                  "(the analytic engine is the truth, not swept)")
+      ->required();
+  cmd->add_option("--out", opt->out, "Sweep file to write (HDF5; written atomically)")->required();
+  cmd->add_option("--set", opt->set,
+                  "Override a case or engine setting, KEY=VALUE (repeatable), except the swept "
+                  "ones (dt, rtol, atol, integrator); e.g. reference.geometry=exact sweeps the "
+                  "reference's integrators without its outline discretisation error")
+      ->take_all();
+  cmd->add_option("--dt-ladder", opt->dt_ladder,
+                  "Time steps, s, comma-separated (default 1e-3,5e-4,2e-4,1e-4,5e-5,2e-5,1e-5): "
+                  "mujoco, box2d, ode and the reference's fixed RK4");
+  cmd->add_option("--jobs,-j", opt->jobs, "Worker threads")->default_val(1);
+  cmd->add_option("--repeat", opt->repeat, "Runs per rung; the wall time is their median")
+      ->default_val(1);
+  cmd->add_flag("--quick", opt->quick,
+                "Two rungs per series (dt 1e-3 and 1e-4 s, or the two largest of --dt-ladder; "
+                "rtol 1e-4 and 1e-6), for CI");
+  cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
+  cmd->add_option(
+      "--cases-dir", opt->cases_dir,
+      "Folder of case files (default: $PLANARBENCH_CASES_DIR or the source tree's cases/)");
+  return [opt, argc, argv] { return run_sweep(*opt, argc, argv); };
+}
+
+}  // namespace pb::cli

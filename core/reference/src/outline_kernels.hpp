@@ -1,0 +1,163 @@
+// The arithmetic that the brute-force outline search (outline_contact.cpp)
+// and the fast one (fast_outline_contact.cpp) share, so that both compute the
+// very same numbers: placing a vertex in the world, one point against one
+// edge, one crossing-number step, the contact geometry of a chosen point and
+// the depth-weighted centroid of a run of inside points. Every function here
+// is the single definition of its formula; neither search repeats it.
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+
+#include "planarbench/reference/contact_geometry.hpp"
+#include "planarbench/reference/outline_contact.hpp"
+
+namespace pb::internal {
+
+// a body-frame point placed in the world (the same expression, hence the same
+// rounding, wherever a vertex is placed)
+[[nodiscard]] inline Vec2 place_point(const Eigen::Matrix2d& rotation, const Vec2& position_m,
+                                      const Vec2& local_m) {
+  return position_m + rotation * local_m;
+}
+
+// what the point and crossing tests need of edge (x0, y0) -> (x1, y1)
+struct EdgeData {
+  double ex = 0.0, ey = 0.0;  // m, edge vector
+  double inv_len2 = 0.0;      // 1/m^2, 1 / |e|^2 (0 for a degenerate edge)
+  double x_per_y = 0.0;       // -, ex / ey (0 for a horizontal edge)
+};
+
+[[nodiscard]] inline EdgeData edge_data(double x0, double y0, double x1, double y1) {
+  EdgeData e;
+  e.ex = x1 - x0;
+  e.ey = y1 - y0;
+  const double len2 = e.ex * e.ex + e.ey * e.ey;
+  e.inv_len2 = len2 > 0.0 ? 1.0 / len2 : 0.0;
+  e.x_per_y = e.ey != 0.0 ? e.ex / e.ey : 0.0;
+  return e;
+}
+
+// unit outward normal of a counter-clockwise outline's edge: the interior is
+// on the left, the outward normal on the right (zero for a degenerate edge)
+[[nodiscard]] inline Vec2 edge_outward_normal(double ex, double ey) {
+  const double len = std::sqrt(ex * ex + ey * ey);
+  return len > 0.0 ? Vec2(ey / len, -ex / len) : Vec2(0.0, 0.0);
+}
+
+// squared distance from (px, py) to the edge starting at (x0, y0), and the
+// position t in [0, 1] of the nearest point on it (projection, clamped)
+[[nodiscard]] inline double point_edge_distance2(double px, double py, double x0, double y0,
+                                                 double ex, double ey, double inv_len2, double& t) {
+  const double dx = px - x0;
+  const double dy = py - y0;
+  t = std::clamp((dx * ex + dy * ey) * inv_len2, 0.0, 1.0);
+  const double rx = dx - t * ex;
+  const double ry = dy - t * ey;
+  return rx * rx + ry * ry;
+}
+
+// crossing number step: a ray from (px, py) towards +x crosses the edge
+// (x0, y0) -> (x0 + ex, y1); half-open in y so that a vertex counts once
+[[nodiscard]] inline bool ray_crosses_edge(double px, double py, double x0, double y0, double y1,
+                                           double x_per_y) {
+  return (y0 > py) != (y1 > py) && px < x0 + (py - y0) * x_per_y;
+}
+
+// one edge of the other body in the world, for the contact geometry
+struct EdgeView {
+  double x0 = 0.0, y0 = 0.0;  // m, start vertex
+  double ex = 0.0, ey = 0.0;  // m, edge vector
+  Vec2 normal = Vec2::Zero(); // unit outward normal
+};
+
+// The geometry of a chosen outline point p of one body and its nearest point
+// on the other body (`hit`): the boundary point q, the outward normal m of
+// the boundary feature there, and the a -> b orientation. `edge_of(e)` gives
+// edge e of the other body (EdgeView), `other_n` its edge count.
+template <class EdgeOf>
+[[nodiscard]] ContactGeometry hit_geometry(const Vec2& p, const BoundaryHit& hit, bool of_a,
+                                           bool overlapping, int other_n, EdgeOf&& edge_of) {
+  const int e = hit.edge;
+  const EdgeView edge = edge_of(e);
+  const Vec2 q(edge.x0 + hit.t * edge.ex, edge.y0 + hit.t * edge.ey);
+
+  // outward normal of the other body at q: the edge's inside the edge; at a
+  // vertex the direction between the points, unless that is rounding noise
+  Vec2 m;
+  if (hit.t > 0.0 && hit.t < 1.0) {
+    m = edge.normal;
+  } else {
+    const Vec2 d = p - q;
+    const double len = d.norm();
+    // below this the direction between the points is rounding noise
+    const double tiny = 1e-12 * (1.0 + p.norm());
+    if (len > tiny) {
+      m = overlapping ? Vec2(-d / len) : Vec2(d / len);
+    } else {
+      // the mean of the two edges' normals at the vertex
+      const int v = hit.t <= 0.0 ? e : (e + 1) % other_n;
+      const int before = (v + other_n - 1) % other_n;
+      const Vec2 nv = edge_of(v).normal;
+      const Vec2 nb = edge_of(before).normal;
+      m = Vec2(nv.x() + nb.x(), nv.y() + nb.y());
+      m = m.norm() > 0.0 ? Vec2(m.normalized()) : nv;
+    }
+  }
+
+  ContactGeometry g;
+  g.gap_m = overlapping ? -hit.distance_m : hit.distance_m;
+  if (of_a) {
+    // p on a, q on b: m is b's outward normal, so a -> b is -m
+    g.normal = -m;
+    g.point_a_m = p;
+    g.point_b_m = q;
+  } else {
+    g.normal = m;
+    g.point_a_m = q;
+    g.point_b_m = p;
+  }
+  return g;
+}
+
+// the run of consecutive inside points around one of them: how many, and
+// their depth-weighted centroid
+struct Run {
+  int points = 0;
+  Vec2 centroid_m = Vec2::Zero();
+};
+
+// The run around `start` (an inside point, or -1 for none) of an outline of n
+// points: `inside(i)`, `depth_m(i)` and `point_m(i)` (world) of point i. Walks
+// back from start, then forward, so that the sum is always taken in the same
+// order.
+template <class Inside, class Depth, class Point>
+[[nodiscard]] Run inside_run(int n, int start, Inside&& inside, Depth&& depth_m, Point&& point_m) {
+  Run r;
+  if (start < 0) return r;
+  double w_sum = 0.0;
+  Vec2 p_sum = Vec2::Zero();
+  auto add = [&](int i) {
+    const double w = depth_m(i);
+    w_sum += w;
+    p_sum += w * point_m(i);
+    ++r.points;
+  };
+  add(start);
+  int back = 1;
+  for (; back < n; ++back) {
+    const int i = (start - back + n) % n;
+    if (!inside(i)) break;
+    add(i);
+  }
+  for (int fwd = 1; fwd < n - back + 1; ++fwd) {
+    const int i = (start + fwd) % n;
+    if (!inside(i)) break;
+    add(i);
+  }
+  r.centroid_m = w_sum > 0.0 ? Vec2(p_sum / w_sum) : point_m(start);
+  return r;
+}
+
+}  // namespace pb::internal

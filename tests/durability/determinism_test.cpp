@@ -1,0 +1,64 @@
+// Tests for the determinism of `planarbench run` as a whole (case loader,
+// reference solver, adapters, runner, results file): the same command gives
+// the same bits, run to run and build to build, through the real binary.
+//
+// Truth: SHA-256 digests of every dataset, computed by an independent h5py
+// script (tests/python/dataset_hashes.py), pinned per case x engine in
+// tests/data/determinism/hashes.json. Provenance: blessed from a Release build
+// with scripts/bless_hashes.sh; the same file must match in the Debug and
+// asan-ubsan builds, since every engine is bitwise reproducible on x86-64
+// (SSE2 doubles, no fast-math, no threads inside a run).
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "child_process.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace pb::test;
+
+const fs::path kPinned = fs::path(PB_SOURCE_DIR) / "tests/data/determinism/hashes.json";
+
+// the pinned command's arguments (everything but --out)
+std::vector<std::string> pinned_args() {
+  std::ifstream f(kPinned);
+  const auto j = nlohmann::json::parse(f);
+  return words(j.at("args").get<std::string>());
+}
+
+// runs `args --out out`; a diverged run (exit 3) still writes its file and is
+// as reproducible as any other, so only bad input or a crash fails here
+void run_into(std::vector<std::string> args, const fs::path& out) {
+  args.insert(args.end(), {"--out", out.string()});
+  const auto r = run_planarbench(args);
+  ASSERT_FALSE(r.exit.signaled) << "killed by signal " << r.exit.code << "\n" << r.err;
+  ASSERT_TRUE(r.exit.code == 0 || r.exit.code == 3) << "exit " << r.exit.code << "\n" << r.err;
+  ASSERT_TRUE(fs::exists(out));
+}
+
+// The full matrix against the pinned digests: a mismatch names each changed
+// case x engine and says how to re-bless.
+TEST(PinnedHashes, FullMatrixMatchesTheBlessedDatasets) {
+  const fs::path out = fresh_dir("determinism_pinned") / "matrix.h5";
+  run_into(pinned_args(), out);
+  const auto c = dataset_hashes("compare " + kPinned.string() + " " + out.string());
+  EXPECT_EQ(c.exit.code, 0) << c.err;
+  std::printf("%s", c.err.c_str());
+}
+
+// The same command twice, every dataset compared by its digest (not pinned:
+// this holds whatever the solvers compute). Threads take tasks in a different
+// order each time, which must not matter either.
+TEST(RunToRun, SameCommandTwiceGivesIdenticalDatasets) {
+  const fs::path dir = fresh_dir("determinism_twice");
+  const std::vector<std::string> args = pinned_args();
+  run_into(args, dir / "first.h5");
+  run_into(args, dir / "second.h5");
+  const auto s =
+      dataset_hashes("same " + (dir / "first.h5").string() + " " + (dir / "second.h5").string());
+  EXPECT_EQ(s.exit.code, 0) << s.err;
+  std::printf("%s", s.err.c_str());
+}
+
+}  // namespace

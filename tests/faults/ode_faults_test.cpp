@@ -1,0 +1,88 @@
+// Tests for the blow-up detection of the ODE adapter (adapters/ode/ode_world.cpp:
+// the runaway bounds, first_blown_up_body after every step and
+// applied_force_reason before an injected force; used by ode_engine.cpp): a
+// runaway ends the run at the step it happens in, before ODE (whose
+// dIASSERTs are kept in Debian's libode and abort the process) integrates or
+// collides a non-finite state; a stable run, however inaccurate, and a long
+// free fall are not flagged.
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "fault_runs.hpp"
+
+namespace pb {
+namespace {
+
+// falling_ball with the case's law applied explicitly (ode.mode=inject) at
+// K = 1e16 N/m and one step per dt (ode.substeps=1 overrides the automatic
+// step that would resolve the contact): omega h = sqrt(K / m) h = 1e4. The
+// first step in contact sees delta ~ v h = 7e-4 m, applies K delta = 7e12 N
+// for h and would send the ball off at ~7e8 m/s: the adapter stops before
+// that step, at the first contact (t = 0.72501 s in closed form).
+TEST(OdeFaults, ExplicitStiffContactRunsAwayAtTheFirstContact) {
+  const faults_test::Sets sets = {{"contact.stiffness", "1e16"},
+                                  {"ode.mode", "inject"},
+                                  {"ode.substeps", "1"},
+                                  {"duration", "0.8"}};
+  const RunResult r = faults_test::run_shipped("falling_ball", "ode", sets);
+  ASSERT_EQ(r.status, RunStatus::diverged) << r.reason;
+  EXPECT_NE(r.reason.find("body 'ball' diverged at t ="), std::string::npos) << r.reason;
+  EXPECT_NE(r.reason.find("runs away"), std::string::npos) << r.reason;
+  // 3e-4 s: onset resolved to a step, the force one step later, Euler's lead
+  EXPECT_NEAR(r.diverged_at_s, 0.72501, 3e-4);
+}
+
+// The same stiffness through ODE's soft contact joint (native mode, the
+// default): ERP/CFM make the spring implicit, which stays bounded at any
+// step. The run is wrong (restitution far from the law's) but not diverged.
+TEST(OdeFaults, ImplicitSoftContactAtAbsurdStiffnessIsNotFlagged) {
+  const faults_test::Sets sets = {
+      {"contact.stiffness", "1e16"}, {"ode.substeps", "1"}, {"duration", "0.8"}};
+  const RunResult r = faults_test::run_shipped("falling_ball", "ode", sets);
+  EXPECT_EQ(r.status, RunStatus::ok) << r.reason;
+}
+
+// A disk falling freely for 500 s ends 1.23e6 m below its start at 4903 m/s
+// (g t^2 / 2, g t): beyond any fixed bound a blow-up check might pick (the
+// adapter's were 1e6 m and 1e6 m/s). The bounds follow from the case: free
+// fall from rest is the a-priori energy bound itself, widened by sqrt(10).
+TEST(OdeFaults, LongFreeFallIsNotABlowUp) {
+  Case c;
+  c.name = "long_fall";
+  c.duration_s = 500.0;
+  c.output_interval_s = 10.0;
+  Body disk;
+  disk.name = "disk";
+  disk.shape = Circle{0.5};
+  disk.mass_kg = 1.0;
+  disk.inertia_kgm2 = 0.125;
+  c.bodies = {disk};
+  auto e = make_engine("ode");
+  SettingsOverrides o;
+  o.set("dt", "1e-2", SettingSource{"--set", 0});
+  const RunResult r = run_engine(*e, c, o);
+  ASSERT_EQ(r.status, RunStatus::ok) << r.reason;
+  // 1e-3 relative: semi-implicit Euler leads the parabola by g h t / 2 = 0.1 % of it
+  EXPECT_NEAR(-r.bodies.at(0).position_m.back().y(), 0.5 * 9.8066 * 500.0 * 500.0, 1e-3 * 1.226e6);
+}
+
+// An infinite stiffness (a Case built in code: the loader refuses inf)
+// applied explicitly gives an infinite force at the first overlap. Given to
+// ODE it aborted the process ("ODE INTERNAL ERROR 1: assertion
+// !bSafeNormalize4Fault failed in dxNormalize4()"); the run now ends before
+// that step, named.
+TEST(OdeFaults, NonFiniteForceEndsTheRunBeforeOdeSeesIt) {
+  Case c = faults_test::shipped_case("falling_ball", {{"duration", "0.8"}});
+  std::get<KelvinVoigt>(c.contacts.at(0).law).stiffness_n_per_m =
+      std::numeric_limits<double>::infinity();
+  auto e = make_engine("ode");
+  const RunResult r =
+      run_engine(*e, c, faults_test::engine_keys({{"ode.mode", "inject"}, {"ode.substeps", "1"}}));
+  ASSERT_EQ(r.status, RunStatus::diverged) << r.reason;
+  EXPECT_NE(r.reason.find("not finite"), std::string::npos) << r.reason;
+  EXPECT_NEAR(r.diverged_at_s, 0.72501, 3e-4);
+}
+
+}  // namespace
+}  // namespace pb
