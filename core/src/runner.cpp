@@ -68,6 +68,7 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
   // the generic fault checks of every sample, whatever the engine: a
   // non-finite state, and kinetic energy beyond what passive contacts allow
   EnergyBudget energy(c);
+  double energy_start_s = 0.0;  // s, time of the state start() was given
   int reported_percent = -1;
   try {
     engine.build(c, engine_overrides);
@@ -86,8 +87,9 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
       engine.contacts(contacts);
       if (k == 0) {
         energy.start(states, contacts);
+        energy_start_s = t;
       } else {
-        energy.update(states);
+        energy.update(states, t - energy_start_s);
       }
       if (energy.runaway()) {
         throw EngineError(fmt::format("energy runaway at t = {:.9g} s: {}", t, energy.describe()));

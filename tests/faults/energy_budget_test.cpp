@@ -78,6 +78,30 @@ TEST(EnergyBudget, ExactFreeFallSitsOnTheBound) {
   EXPECT_NEAR(e.kinetic_now_j(), 0.5 * 2.0 * std::pow(kG * 0.5, 2), 1e-9);
 }
 
+// A float engine (Box2D) cannot resolve the first 1e-4 s of a fall from 3 m:
+// the drop g t^2 / 2 = 4.9e-8 m is below a float's step at 3 m (2.4e-7 m), so
+// its position has not moved while its speed g t is exact. From positions
+// alone gravity has made no energy available (a false runaway, seen in the
+// sweep at Box2D dt <= 5e-5 s); the time-aware update floors the budget with
+// EnergyBound, m (g t)^2 / 2 from rest, which this state meets exactly.
+TEST(EnergyBudget, ElapsedTimeFloorsTheBudgetWhenPositionsLagTheSpeed) {
+  const Case c = disk_case();
+  const double t = 1e-4;
+  const auto lagging = disk_state(Vec2(0.0, 3.0), Vec2(0.0, -kG * t));
+  EnergyBudget by_position(c);
+  by_position.start(disk_state(Vec2(0.0, 3.0), Vec2::Zero()), {});
+  by_position.update(lagging);
+  EXPECT_TRUE(by_position.runaway());
+  EnergyBudget by_time(c);
+  by_time.start(disk_state(Vec2(0.0, 3.0), Vec2::Zero()), {});
+  // 1e-12: KE and the bound are the same number computed two ways
+  EXPECT_NEAR(by_time.update(lagging, t), 1.0, 1e-12);
+  EXPECT_FALSE(by_time.runaway());
+  // a real runaway is still one: 4x the speed is 16x the energy
+  by_time.update(disk_state(Vec2(0.0, 3.0), Vec2(0.0, -4.0 * kG * t)), t);
+  EXPECT_TRUE(by_time.runaway());
+}
+
 // The budget keeps the most energy made available: a ball that bounced back
 // up (elastically, to half its drop) may carry the kinetic energy of the
 // lowest point it reached.

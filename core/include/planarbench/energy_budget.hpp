@@ -128,6 +128,22 @@ class EnergyBudget {
     return ratio_;
   }
 
+  // The same, `elapsed_s` after start(), with the energy made available never
+  // below EnergyBound::kinetic_j(elapsed_s), which holds whatever the state:
+  // the work of gravity measured from positions alone misses what a float
+  // engine (Box2D) cannot resolve yet - a 1e-4 s fall moves a body 5e-8 m, below
+  // a float's step at 1 m (6e-8 m), while its speed g t is already exact.
+  double update(const std::vector<BodyState>& states, double elapsed_s) {
+    EnergyBound bound;
+    bound.initial_j = start_j_;
+    bound.gravity_mps2 = case_.gravity_mps2.norm();
+    for (const Body& b : case_.bodies) {
+      if (!b.fixed) bound.moving_mass_kg += b.mass_kg;
+    }
+    most_available_j_ = std::max(most_available_j_, bound.kinetic_j(std::max(elapsed_s, 0.0)));
+    return update(states);
+  }
+
   // the last update() exceeded kRunawayEnergyFactor (false for NaN: the
   // non-finite check comes first)
   [[nodiscard]] bool runaway() const { return ratio_ > kRunawayEnergyFactor; }

@@ -18,9 +18,9 @@ struct RunOptions {
 
 // Builds `engine` for case `c`, advances it to every output time, samples body
 // states and contacts, and returns the result. Unsupported cases give status
-// unsupported with the engine's reason; an EngineError or a non-finite state
-// gives status diverged with the time and the reason. InputError (bad
-// settings) propagates.
+// unsupported with the engine's reason; an EngineError, a non-finite state or
+// an energy runaway (planarbench/energy_budget.hpp) gives status diverged with
+// the time and the reason. InputError (bad settings) propagates.
 [[nodiscard]] RunResult run_engine(Engine& engine, const Case& c,
                                    const SettingsOverrides& engine_overrides,
                                    const RunOptions& options = {});
