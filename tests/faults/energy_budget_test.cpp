@@ -114,6 +114,7 @@ TEST(EnergyBudget, RememberTheMostEnergyMadeAvailable) {
   e.update(disk_state(Vec2(0.0, 1.0), Vec2(0.0, -v_low)));
   // back up at 2 m: the pointwise bound is m g 1 m, the budget m g 2 m; a
   // speed of v_low there (energy not lost on the way up) is a ratio of 1
+  // 1e-12: closed-form values of order 1-100 J computed two ways; only rounding differs
   EXPECT_NEAR(e.update(disk_state(Vec2(0.0, 2.0), Vec2(0.0, v_low))), 1.0, 1e-12);
   EXPECT_NEAR(e.most_available_j(), 2.0 * kG * 2.0, 1e-12);
 }
@@ -126,6 +127,7 @@ TEST(EnergyBudget, EnergyBeyondTheFactorIsARunaway) {
   EnergyBudget e(c);
   const Vec2 v0(1.0, 0.0);  // m/s: KE(0) = 1 J, no gravity
   e.start(disk_state(Vec2(0.0, 3.0), v0), {});
+  // 1e-12: closed-form values of order 1-100 J computed two ways; only rounding differs
   EXPECT_NEAR(e.update(disk_state(Vec2(1.0, 3.0), 3.0 * v0)), 9.0, 1e-12);
   EXPECT_FALSE(e.runaway());
   EXPECT_NEAR(e.update(disk_state(Vec2(1.0, 3.0), 3.5 * v0)), 12.25, 1e-12);
@@ -151,6 +153,7 @@ TEST(EnergyBudget, InitialPenetrationCountsItsElasticEnergy) {
   deep.penetration_m = 0.1;
   EnergyBudget e(c);
   e.start(disk_state(Vec2(0.0, 0.4), Vec2::Zero()), {deep});
+  // 1e-12: closed-form values of order 1-100 J computed two ways; only rounding differs
   EXPECT_NEAR(e.most_available_j(), 50.0, 1e-12);
   EXPECT_NEAR(e.update(disk_state(Vec2(0.0, 0.6), Vec2(0.0, std::sqrt(50.0)))), 1.0, 1e-12);
   // an engine that gives no penetration (NaN) stores nothing
@@ -194,6 +197,7 @@ TEST(EnergyBound, OneBodyThrownDownIsTheBound) {
 // (g t)^2 M / 2 = 2 g^2 J, which the 1 kg ball alone would carry at g t sqrt(M/m) = 2 g t.
 TEST(EnergyBound, EnergyMayGatherInTheLightestBody) {
   const EnergyBound b{0.0, 4.0, kG};
+  // 1e-12: closed-form values of order 1-100 J computed two ways; only rounding differs
   EXPECT_NEAR(b.kinetic_j(1.0), 2.0 * kG * kG, 1e-12);
   // m: int_0^1 2 g t dt = g for the 1 kg ball
   EXPECT_NEAR(b.displacement_m(1.0, 1.0), kG, 1e-12);

@@ -132,7 +132,6 @@ TEST(RunnerFaults, ExponentialEnergyGrowthIsARunawayAtItsClosedFormTime) {
   // 4^1.7 = 10.56 times the 0.5 J it started with
   EXPECT_NE(r.reason.find("10.56 times"), std::string::npos) << r.reason;
   EXPECT_EQ(r.bodies.at(0).time_s.size(), 17u);
-  EXPECT_LT(0.1 * std::log(10.0) / std::log(4.0), 0.17);
 }
 
 // A disk 0.1 m deep in a K = 1e4 N/m contact at t = 0 holds K d^2 / 2 = 50 J;

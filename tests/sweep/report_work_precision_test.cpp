@@ -20,6 +20,9 @@ TEST(TimeToReach, InterpolatesLogLogBetweenTheBracketingRungs) {
   const Reach r = pb::internal::time_to_reach({0.2, 0.8}, {4e-3, 2.5e-4}, 1e-3);
   EXPECT_EQ(r.kind, Reach::Kind::interpolated);
   // 1e-12 relative: a few roundings of log and exp
+  // by hand: 1e-3 lies halfway (in log) between 4e-3 and 2.5e-4 (factors 4 and
+  // 4), so the time is halfway in log between 0.2 and 0.8 s: sqrt(0.16) = 0.4 s;
+  // 1e-12 s allows the rounding of the log-log interpolation
   EXPECT_NEAR(r.wall_time_s, 0.4, 1e-12);
   // a decade of time per two of error: 1e-3 m is half way, sqrt(0.1 * 1) s
   EXPECT_NEAR(pb::internal::time_to_reach({0.1, 1.0}, {1e-2, 1e-4}, 1e-3).wall_time_s,
@@ -42,6 +45,7 @@ TEST(TimeToReach, ACheaperFinerRungBoundsTheTime) {
 
 TEST(TimeToReach, ExactlyAtTheLevelIsThatRungsTime) {
   const Reach r = pb::internal::time_to_reach({0.2, 0.8}, {4e-3, 1e-3}, 1e-3);
+  // 1e-12 s: the rung's own time, up to the interpolation's rounding
   EXPECT_NEAR(r.wall_time_s, 0.8, 1e-12);
   // an error of exactly 0 cannot be put on a log scale: the rung's own time
   EXPECT_EQ(pb::internal::time_to_reach({0.2, 0.8}, {4e-3, 0.0}, 1e-3).wall_time_s, 0.8);

@@ -83,6 +83,7 @@ TEST(SweepError, StepOnTheGridIsComparedAtEverySample) {
   const auto fine = run_of(
       "engine", [](int k) { return k * kInterval; }, kOffset);
   EXPECT_EQ(pb::cli::samples_on_grid(grid_case(), fine), static_cast<std::size_t>(kSamples - 1));
+  // 1e-12 m: the offset is added to exact grid positions; only rounding differs
   EXPECT_NEAR(pb::cli::sweep_position_error(grid_case(), fine, truth()), kOffset, 1e-12);
 }
 
