@@ -108,7 +108,8 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
   Progress progress(opt.quiet, tasks.size());
   std::vector<SchedulerTask> plan;
   for (const Task& t : tasks) {
-    plan.push_back(SchedulerTask{expected_cost(t.engine, cases[t.case_index].duration_s),
+    const Case& c = cases[t.case_index];
+    plan.push_back(SchedulerTask{expected_cost(c.name, t.engine, c.duration_s),
                                  exclusive_group(t.engine)});
   }
   TaskScheduler scheduler(std::move(plan));
@@ -159,7 +160,7 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
     }
     file.cases.push_back(std::move(cr));
   }
-  write_results_file(opt.out, file);
+  write_results_file(opt.out, file, opt.jobs);
 
   int diverged = 0;
   for (const auto& cr : file.cases) {

@@ -10,6 +10,7 @@ PACKAGES=(
   libbox2d-dev
   libode-dev
   libhdf5-dev hdf5-tools
+  zlib1g-dev                   # results-file chunks deflated in parallel
   libbenchmark-dev
   libgtest-dev libgmock-dev
   libcli11-dev

@@ -7,31 +7,37 @@ namespace pb {
 
 namespace {
 
-// The root s of G(s) = (r0 z0 / (s + r0))^2 + (z1 / (s + 1))^2 - 1, decreasing
+// The root of G(s) = (r0 z0 / (s + r0))^2 + (z1 / (s + 1))^2 - 1, decreasing
 // on s > -1, bracketed by [z1 - 1, 0] inside (g < 0) and [z1 - 1, |(r0 z0, z1)| - 1]
-// outside (Eberly 2013, eqs. for GetRoot). Bisection until the midpoint no
-// longer moves: full double precision without any tolerance to choose.
-double bisect_root(double r0, double z0, double z1, double g) {
+// outside (Eberly 2013, eqs. for GetRoot), returned as u = s + 1. The search
+// runs on u, not s: near the major axis inside the ellipse the root is close
+// to s = -1, where s + 1 computed from s would keep only the bits of s above
+// 1e-16 (a relative error of 1e-16 / (s + 1) in the point's minor coordinate;
+// 8e-14 off the ellipse measured at u = 3e-4). The bracket [z1, ...] is exact
+// in u. Bisection until the midpoint no longer moves: full double precision
+// without any tolerance to choose.
+double bisect_root_plus_one(double r0, double z0, double z1, double g) {
   const double n0 = r0 * z0;
-  double s0 = z1 - 1.0;
-  double s1 = g < 0.0 ? 0.0 : std::hypot(n0, z1) - 1.0;
-  double s = s0;
+  const double r0_minus_1 = r0 - 1.0;  // s + r0 = u + (r0 - 1)
+  double u0 = z1;
+  double u1 = g < 0.0 ? 1.0 : std::hypot(n0, z1);
+  double u = u0;
   // about 2100 halvings exhaust any bracket of doubles; the cap only bounds the loop
   for (int i = 0; i < 2200; ++i) {
-    s = 0.5 * (s0 + s1);
-    if (s == s0 || s == s1) break;
-    const double ratio0 = n0 / (s + r0);
-    const double ratio1 = z1 / (s + 1.0);
+    u = 0.5 * (u0 + u1);
+    if (u == u0 || u == u1) break;
+    const double ratio0 = n0 / (u + r0_minus_1);
+    const double ratio1 = z1 / u;
     const double gs = ratio0 * ratio0 + ratio1 * ratio1 - 1.0;
     if (gs > 0.0) {
-      s0 = s;
+      u0 = u;
     } else if (gs < 0.0) {
-      s1 = s;
+      u1 = u;
     } else {
       break;
     }
   }
-  return s;
+  return u;
 }
 
 // first quadrant, e0 >= e1 > 0, y0, y1 >= 0: the closest point (x0, x1),
@@ -44,8 +50,8 @@ Vec2 closest_first_quadrant(double e0, double e1, double y0, double y1) {
       const double g = z0 * z0 + z1 * z1 - 1.0;
       if (g == 0.0) return Vec2(y0, y1);
       const double r0 = (e0 / e1) * (e0 / e1);
-      const double s = bisect_root(r0, z0, z1, g);
-      return Vec2(r0 * y0 / (s + r0), y1 / (s + 1.0));
+      const double u = bisect_root_plus_one(r0, z0, z1, g);
+      return Vec2(r0 * y0 / (u + (r0 - 1.0)), y1 / u);
     }
     return Vec2(0.0, e1);
   }

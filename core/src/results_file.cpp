@@ -156,16 +156,18 @@ std::vector<double> flatten(const std::vector<Vec2>& v) {
   return out;
 }
 
-void write_body(hid_t bodies, const BodyTrajectory& b) {
+void write_body(hid_t bodies, const BodyTrajectory& b, internal::ChunkWriter* writer) {
   Hid g = create_group(bodies, b.name);
-  internal::write_double_dataset(g.get(), "time", b.time_s, 0, "s");
-  internal::write_double_dataset(g.get(), "position", flatten(b.position_m), 2, "m");
-  internal::write_double_dataset(g.get(), "angle", b.angle_rad, 0, "rad");
-  internal::write_double_dataset(g.get(), "velocity", flatten(b.velocity_mps), 2, "m/s");
-  internal::write_double_dataset(g.get(), "angular_velocity", b.angular_velocity_radps, 0, "rad/s");
+  internal::write_double_dataset(g.get(), "time", b.time_s, 0, "s", writer);
+  internal::write_double_dataset(g.get(), "position", flatten(b.position_m), 2, "m", writer);
+  internal::write_double_dataset(g.get(), "angle", b.angle_rad, 0, "rad", writer);
+  internal::write_double_dataset(g.get(), "velocity", flatten(b.velocity_mps), 2, "m/s",
+                                 writer);
+  internal::write_double_dataset(g.get(), "angular_velocity", b.angular_velocity_radps, 0, "rad/s",
+                                 writer);
 }
 
-void write_contacts(hid_t run, const RunResult& r) {
+void write_contacts(hid_t run, const RunResult& r, internal::ChunkWriter* writer) {
   const std::string object = child_path(run, "contacts");
   std::vector<ContactRecord> rows(r.contacts.size(), ContactRecord{});
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -181,10 +183,10 @@ void write_contacts(hid_t run, const RunResult& r) {
     row.point_m[0] = c.sample.point_m.x();
     row.point_m[1] = c.sample.point_m.y();
   }
-  internal::write_table(run, "contacts", contact_layout(), rows.data(), rows.size());
+  internal::write_table(run, "contacts", contact_layout(), rows.data(), rows.size(), writer);
 }
 
-void write_events(hid_t run, const RunResult& r) {
+void write_events(hid_t run, const RunResult& r, internal::ChunkWriter* writer) {
   const std::string object = child_path(run, "events");
   std::vector<EventRecord> rows(r.events.size(), EventRecord{});
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -201,7 +203,7 @@ void write_events(hid_t run, const RunResult& r) {
     row.impulse_ns = e.impulse_ns;
     row.max_penetration_m = e.max_penetration_m;
   }
-  internal::write_table(run, "events", event_layout(), rows.data(), rows.size());
+  internal::write_table(run, "events", event_layout(), rows.data(), rows.size(), writer);
 }
 
 // JSON text; invalid UTF-8 in a string becomes U+FFFD instead of failing the write
@@ -210,7 +212,7 @@ std::string json_text(const Json& j) {
   return j.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
-void write_run(hid_t case_group, const RunResult& r) {
+void write_run(hid_t case_group, const RunResult& r, internal::ChunkWriter* writer) {
   Hid g = create_group(case_group, r.engine_name);
   internal::write_string_attribute(g.get(), "engine_version", r.engine_version);
   internal::write_string_attribute(g.get(), "status", run_status_name(r.status));
@@ -226,14 +228,14 @@ void write_run(hid_t case_group, const RunResult& r) {
   // an unsupported run has no trajectories: no bodies group (SPEC §5)
   if (r.status != RunStatus::unsupported || !r.bodies.empty()) {
     Hid bodies = create_group(g.get(), "bodies");
-    for (const auto& b : r.bodies) write_body(bodies.get(), b);
+    for (const auto& b : r.bodies) write_body(bodies.get(), b, writer);
   }
   // tables are always present, zero rows when empty, so readers need no special case
-  write_contacts(g.get(), r);
-  write_events(g.get(), r);
+  write_contacts(g.get(), r, writer);
+  write_events(g.get(), r, writer);
 }
 
-void write_case(hid_t runs, const CaseRuns& c) {
+void write_case(hid_t runs, const CaseRuns& c, internal::ChunkWriter* writer) {
   Hid g = create_group(runs, c.case_name);
   internal::write_string_attribute(g.get(), "case_text", c.case_text);
   internal::write_string_attribute(g.get(), "case_sha256", internal::sha256_hex(c.case_text));
@@ -242,22 +244,25 @@ void write_case(hid_t runs, const CaseRuns& c) {
   nlohmann::ordered_json overrides = nlohmann::ordered_json::object();
   for (const auto& [key, value] : c.overrides) overrides[key] = value;
   internal::write_string_attribute(g.get(), "overrides", json_text(overrides));
-  for (const auto& r : c.runs) write_run(g.get(), r);
+  for (const auto& r : c.runs) write_run(g.get(), r, writer);
 }
 
 // the whole file at `path`; all handles are closed before the file is
-void write_file(const fs::path& path, const ResultsFile& results) {
+void write_file(const fs::path& path, const ResultsFile& results, int threads) {
   const std::string object = "/";
   Hid fcpl = internal::owned_plist(H5Pcreate(H5P_FILE_CREATE), object, "cannot create properties");
   internal::check(H5Pset_obj_track_times(fcpl.get(), 0), object, "cannot switch off times");
   Hid file = internal::owned_file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.get(), H5P_DEFAULT),
                                   object, fmt::format("cannot create '{}'", path.string()));
+  // declared after the file: on failure its queued datasets close first
+  internal::ChunkWriter writer(threads);
   write_h5md(file.get());
   write_parameters(file.get(), results.provenance);
   {
     Hid runs = create_group(file.get(), "runs");
-    for (const auto& c : results.cases) write_case(runs.get(), c);
+    for (const auto& c : results.cases) write_case(runs.get(), c, &writer);
   }
+  writer.finish();
   file.close(object);
 }
 
@@ -500,7 +505,7 @@ ResultsFile read_file(hid_t file) {
 
 }  // namespace
 
-void write_results_file(const fs::path& path, const ResultsFile& results) {
+void write_results_file(const fs::path& path, const ResultsFile& results, int threads) {
   internal::QuietHdf5 quiet;
   // the target directory must exist and be writable before anything is made
   const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
@@ -523,7 +528,7 @@ void write_results_file(const fs::path& path, const ResultsFile& results) {
   const fs::path tmp =
       dir / fmt::format("{}{}", temporary_prefix(path), static_cast<long>(::getpid()));
   try {
-    write_file(tmp, results);
+    write_file(tmp, results, threads);
     fsync_path(tmp, O_RDONLY);
     fs::rename(tmp, path);
   } catch (const Hdf5Error& e) {

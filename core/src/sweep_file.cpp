@@ -58,7 +58,7 @@ void write_string_dataset(hid_t loc, const char* name, const std::vector<std::st
   ptrs.reserve(values.size());
   for (const auto& v : values) ptrs.push_back(v.c_str());
   const hsize_t n = values.size();
-  Hid d = internal::create_and_write(loc, name, type.get(), type.get(), 1, &n, ptrs.data());
+  Hid d = internal::create_and_write(loc, name, type.get(), type.get(), 1, &n, ptrs.data(), nullptr);
   internal::write_string_attribute(d.get(), "unit", unit);
   d.close(object);
 }
@@ -68,7 +68,8 @@ void write_int64_dataset(hid_t loc, const char* name, const std::vector<std::int
   const std::string object = child_path(loc, name);
   const hsize_t n = values.size();
   Hid d =
-      internal::create_and_write(loc, name, H5T_STD_I64LE, H5T_NATIVE_INT64, 1, &n, values.data());
+      internal::create_and_write(loc, name, H5T_STD_I64LE, H5T_NATIVE_INT64, 1, &n,
+                                 values.data(), nullptr);
   internal::write_string_attribute(d.get(), "unit", unit);
   d.close(object);
 }

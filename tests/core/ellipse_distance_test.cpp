@@ -63,7 +63,7 @@ TEST(EllipseDistance, RandomPointsInsideAndOutside) {
   std::uniform_real_distribution<double> u(-1.5, 1.5);
   // the dual_pendulum ellipse, the same turned (a < b) and a circle
   for (const auto& ab : {Vec2(0.7071, 0.25), Vec2(0.25, 0.7071), Vec2(0.5, 0.5)}) {
-    for (int i = 0; i < 200; ++i) check_point(ab.x(), ab.y(), Vec2(u(rng), u(rng)));
+    for (int i = 0; i < 200; ++i) check_point(ab.x(), ab.y(), Vec2{u(rng), u(rng)});
   }
 }
 

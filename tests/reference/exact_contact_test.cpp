@@ -77,8 +77,8 @@ TEST(ExactContact, EllipseCircleAgainstParameterMinimisation) {
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int i = 0; i < 100; ++i) {
-    const Pose pe{Vec2(u(rng), u(rng)), 3 * u(rng)};
-    const Vec2 c = pe.position_m + Vec2(1.2 * u(rng), 1.2 * u(rng));
+    const Pose pe{Vec2{u(rng), u(rng)}, 3 * u(rng)};
+    const Vec2 c = pe.position_m + Vec2{1.2 * u(rng), 1.2 * u(rng)};
     const Vec2 cl = pe.to_local(c);
     auto f = [&](double t) { return (cl - Vec2(a * std::cos(t), b * std::sin(t))).norm(); };
     double bt = 0.0, bv = f(0.0);

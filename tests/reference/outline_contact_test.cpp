@@ -184,8 +184,8 @@ TEST(OutlineContact, SwappingBodiesNegatesTheNormal) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int i = 0; i < 50; ++i) {
-    const Pose pa{Vec2(u(rng), u(rng)), 3 * u(rng)};
-    const Pose pb{Vec2(u(rng), 1.6 + u(rng)), 3 * u(rng)};
+    const Pose pa{Vec2{u(rng), u(rng)}, 3 * u(rng)};
+    const Pose pb{Vec2{u(rng), 1.6 + u(rng)}, 3 * u(rng)};
     const Points a = square(-0.5, -0.5, 1.0);
     const Points b = make_outline(Ellipse{0.7, 0.3}, 40);
     const ContactGeometry g1 = contact(a, b, pa, pb);
@@ -205,7 +205,7 @@ TEST(OutlineContact, ApartDistanceEqualsExactPolygonDistance) {
   int apart = 0;
   for (int i = 0; i < 200; ++i) {
     const Pose pa{Vec2(0, 0), 3 * u(rng)};
-    const Pose pb{Vec2(1.5 * u(rng), 1.5 * u(rng)), 3 * u(rng)};
+    const Pose pb{Vec2{1.5 * u(rng), 1.5 * u(rng)}, 3 * u(rng)};
     const ContactGeometry g = contact(a, b, pa, pb);
     if (g.gap_m <= 0.0) continue;
     ++apart;

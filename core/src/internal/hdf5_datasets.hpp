@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "hdf5_attributes.hpp"
+#include "hdf5_chunks.hpp"
 #include "hdf5_handle.hpp"
 
 namespace pb::internal {
@@ -37,15 +38,82 @@ inline Hid dataset_properties(int rank, const hsize_t* dims, const std::string& 
   return dcpl;
 }
 
-// creates dataset `name` in loc and writes buf (nothing to write for 0 rows)
+// true when values of type t are plain bytes: no variable-length strings or
+// sequences anywhere in it (those are pointers in memory)
+inline bool fixed_size_type(hid_t t) {
+  switch (H5Tget_class(t)) {
+    case H5T_INTEGER:
+    case H5T_FLOAT:
+      return true;
+    case H5T_STRING:
+      return H5Tis_variable_str(t) == 0;
+    case H5T_ARRAY: {
+      const hid_t super = H5Tget_super(t);
+      const bool fixed = super >= 0 && fixed_size_type(super);
+      if (super >= 0) H5Tclose(super);
+      return fixed;
+    }
+    case H5T_COMPOUND: {
+      const int n = H5Tget_nmembers(t);
+      if (n < 0) return false;
+      for (int i = 0; i < n; ++i) {
+        const hid_t member = H5Tget_member_type(t, static_cast<unsigned>(i));
+        const bool fixed = member >= 0 && fixed_size_type(member);
+        if (member >= 0) H5Tclose(member);
+        if (!fixed) return false;
+      }
+      return true;
+    }
+    default:
+      return false;
+  }
+}
+
+// Hands the chunked dataset d, filled from buf, to `writer` (or writes it
+// now when writer is null), when buf is already in the file's byte layout
+// (H5Tequal: native little-endian doubles, rows without padding) and holds no
+// pointers (no variable-length data); false when it is not, and the caller
+// lets the library convert and filter.
+inline bool write_encoded_chunks(const Hid& d, hid_t file_type, hid_t mem_type, int rank,
+                                 const hsize_t* dims, const void* buf, ChunkWriter* writer,
+                                 const std::string& object) {
+  const htri_t same = H5Tequal(file_type, mem_type);
+  if (same < 0) check(-1, object, "cannot compare the types");
+  if (same == 0 || !fixed_size_type(file_type)) return false;
+  const std::size_t type_size = H5Tget_size(file_type);
+  const std::size_t row_bytes = type_size * (rank > 1 ? dims[1] : 1);
+  const auto* first = static_cast<const unsigned char*>(buf);
+  std::vector<unsigned char> bytes(first, first + row_bytes * dims[0]);
+  // a handle of the writer's own: the caller may close d meanwhile
+  check(H5Iinc_ref(d.get()), object, "cannot share the dataset handle");
+  Hid own(d.get(), H5Dclose);
+  if (writer != nullptr) {
+    writer->submit(std::move(own), object, std::move(bytes), kChunkRows, row_bytes, type_size,
+                   static_cast<int>(kDeflateLevel));
+  } else {
+    ChunkWriter now(1);
+    now.submit(std::move(own), object, std::move(bytes), kChunkRows, row_bytes, type_size,
+               static_cast<int>(kDeflateLevel));
+    now.finish();
+  }
+  return true;
+}
+
+// creates dataset `name` in loc and writes buf (nothing to write for 0 rows);
+// a chunked dataset goes through `writer` when given (compressed on its
+// threads, written later: writer->finish() before the file is closed)
 inline Hid create_and_write(hid_t loc, const char* name, hid_t file_type, hid_t mem_type, int rank,
-                            const hsize_t* dims, const void* buf) {
+                            const hsize_t* dims, const void* buf, ChunkWriter* writer) {
   const std::string object = object_path(loc) + "/" + name;
   Hid space = owned_space(H5Screate_simple(rank, dims, nullptr), object, "cannot create a space");
   Hid dcpl = dataset_properties(rank, dims, object);
   Hid d = owned_dataset(
       H5Dcreate2(loc, name, file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT), object,
       "cannot create the dataset");
+  if (dims[0] > kChunkRows &&
+      write_encoded_chunks(d, file_type, mem_type, rank, dims, buf, writer, object)) {
+    return d;
+  }
   if (dims[0] > 0) {
     check(H5Dwrite(d.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf), object,
           "cannot write the dataset");
@@ -55,11 +123,12 @@ inline Hid create_and_write(hid_t loc, const char* name, hid_t file_type, hid_t 
 
 // [rows] (cols == 0) or [rows, cols] doubles, row-major, with its unit
 inline void write_double_dataset(hid_t loc, const char* name, const std::vector<double>& values,
-                                 hsize_t cols, const std::string& unit) {
+                                 hsize_t cols, const std::string& unit,
+                                 ChunkWriter* writer = nullptr) {
   const hsize_t rows = cols == 0 ? values.size() : values.size() / cols;
   const hsize_t dims[2] = {rows, cols};
   Hid d = create_and_write(loc, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, cols == 0 ? 1 : 2, dims,
-                           values.data());
+                           values.data(), writer);
   write_string_attribute(d.get(), "unit", unit);
   d.close(object_path(loc) + "/" + name);
 }
@@ -158,11 +227,11 @@ inline Hid table_type(const TableLayout& layout, bool in_file, const std::string
 
 // writes rows (an array of n records laid out as `layout`) with unit and fields
 inline void write_table(hid_t loc, const char* name, const TableLayout& layout, const void* rows,
-                        hsize_t n) {
+                        hsize_t n, ChunkWriter* writer = nullptr) {
   const std::string object = object_path(loc) + "/" + name;
   Hid file_type = table_type(layout, true, object);
   Hid mem_type = table_type(layout, false, object);
-  Hid d = create_and_write(loc, name, file_type.get(), mem_type.get(), 1, &n, rows);
+  Hid d = create_and_write(loc, name, file_type.get(), mem_type.get(), 1, &n, rows, writer);
   std::vector<std::string> units, fields;
   for (const auto& f : layout.fields) {
     units.emplace_back(f.unit);

@@ -127,8 +127,8 @@ inline std::optional<std::string> polygon_problem(const std::vector<Vec2>& p) {
   // centroid at the body origin (the body frame's origin is the centre of mass)
   const double tolerance = kPolygonCentroidTolerance * size;
   if (props.centroid_m.norm() > tolerance) {
-    return fmt::format("centroid is at ({}, {}), not at the body origin (tolerance {} m = 1e-9 x "
-                       "size): subtract it from every point",
+    return fmt::format("centroid is at ({:g}, {:g}), not at the body origin (tolerance {:.3g} m "
+                       "= 1e-9 x size): subtract it from every point",
                        props.centroid_m.x(), props.centroid_m.y(), tolerance);
   }
   return std::nullopt;
