@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "threshold_names.hpp"
 #include "planarbench/errors.hpp"
 #include "planarbench/reports/report.hpp"
 
@@ -24,6 +25,10 @@ int run_report(const ReportOptionsCli& opt) {
   options.out_dir = opt.out;
   options.thresholds = opt.thresholds;
   options.sweep = opt.sweep;
+  // a misspelt case or engine would otherwise be a check silently never made
+  options.check_thresholds = [&opt](const std::vector<Threshold>& t, const ResultsFile& r) {
+    check_threshold_names(opt.thresholds, t, r);
+  };
   if (opt.results.empty() && opt.sweep.empty()) {
     throw InputError("report", 0, "", "give a results file, --sweep FILE, or both");
   }

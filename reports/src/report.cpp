@@ -81,6 +81,7 @@ ReportSummary write_report(const ReportOptions& options) {
       with_results ? internal::read_file_provenance(options.results) : internal::FileProvenance{};
   const auto thresholds =
       options.thresholds.empty() ? std::vector<Threshold>{} : load_thresholds(options.thresholds);
+  if (options.check_thresholds && !thresholds.empty()) options.check_thresholds(thresholds, results);
 
   Report report;
   report.results_file = options.results.string();

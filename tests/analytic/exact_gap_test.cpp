@@ -36,7 +36,8 @@ TEST(ClosestPointOnEllipse, AgreesWithBruteForce) {
       // on the ellipse: each coordinate carries a rounding error of ~eps x max(a, b),
       // which (y / b)^2 amplifies by 2 max(a, b) / min(a, b); 8 eps x that ratio
       // leaves a factor 4 for the sum's own roundings (1.8e-15 for the circle,
-      // 2.7e-13 for the 1.5 x 0.01 ellipse, whose Clang build lands at 8.3e-14)
+      // 5.0e-15 for 0.7071 x 0.25). It failed before the root search ran on
+      // s + 1: p = (0.2036, -7.07e-5), inside near the major axis, was 8.3e-14 off.
       const double on_tol =
           8.0 * std::numeric_limits<double>::epsilon() * std::max(a, b) / std::min(a, b);
       EXPECT_NEAR(std::pow(c.point.x() / a, 2) + std::pow(c.point.y() / b, 2), 1.0, on_tol);

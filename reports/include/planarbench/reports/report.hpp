@@ -9,7 +9,12 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <vector>
+
+#include "planarbench/reports/thresholds.hpp"
+#include "planarbench/run_result.hpp"
 
 namespace pb {
 
@@ -25,6 +30,10 @@ struct ReportOptions {
   // reports/web
   std::filesystem::path web_dir;
   std::size_t max_points_outside_contact = 5000;  // per series, in the page
+  // called with the thresholds and the results once both are read, before
+  // anything is computed or written (the command line checks the names the
+  // thresholds use); empty: no check
+  std::function<void(const std::vector<Threshold>&, const ResultsFile&)> check_thresholds;
 };
 
 struct ReportSummary {
