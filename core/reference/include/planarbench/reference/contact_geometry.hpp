@@ -35,7 +35,9 @@ struct Pose {
 //   gap_m > 0: the bodies are apart, gap_m is their distance;
 //   gap_m < 0: they overlap, -gap_m is the penetration delta;
 //   normal: unit, from body a towards body b (the direction b must move to
-//   separate); gap_m == normal . (point_b_m - point_a_m) always holds.
+//   separate); gap_m == normal . (point_b_m - point_a_m) up to rounding
+//   whenever |gap_m| > 1e-12 (1 + |point|): at a touch the points coincide and
+//   the normal comes from the geometry, not from their difference.
 // Apart, the points are the closest points; overlapping, one of them is the
 // deepest point of one body inside the other and the other is its nearest
 // point on the other body's boundary.
