@@ -100,9 +100,19 @@ class Hdf5Chunks : public ::testing::Test {
     for (int threads : {1, 3}) {
       const std::string ours_name = dataset_name(name, static_cast<std::size_t>(threads));
       {
+        // our encoder, called directly: it must take the data (true), or
+        // the comparison below would only compare the library with itself
+        Hid space = pb::internal::owned_space(H5Screate_simple(rank, dims, nullptr), ours_name,
+                                              "space");
+        Hid dcpl = pb::internal::dataset_properties(rank, dims, ours_name);
+        Hid d = pb::internal::owned_dataset(H5Dcreate2(file_.get(), ours_name.c_str(), type,
+                                                       space.get(), H5P_DEFAULT, dcpl.get(),
+                                                       H5P_DEFAULT),
+                                            ours_name, "create");
         ChunkWriter writer(threads);
-        Hid d = pb::internal::create_and_write(file_.get(), ours_name.c_str(), type, type, rank,
-                                               dims, buf, &writer);
+        EXPECT_TRUE(pb::internal::write_encoded_chunks(d, type, type, rank, dims, buf, &writer,
+                                                       ours_name))
+            << name << ": the data did not take the encoder";
         d.close(ours_name);  // the writer holds a handle of its own
         writer.finish();
       }
@@ -224,6 +234,19 @@ TEST_F(Hdf5Chunks, VariableLengthStringsTakeTheLibrarysPath) {
   for (std::size_t i = 0; i < text.size(); ++i) text[i] = "row " + std::to_string(i);
   for (const auto& s : text) ptrs.push_back(s.c_str());
   const hsize_t n = text.size();
+  {
+    // the encoder itself refuses them
+    const hsize_t dims[1] = {n};
+    Hid space = pb::internal::owned_space(H5Screate_simple(1, dims, nullptr), "s0", "space");
+    Hid dcpl = pb::internal::dataset_properties(1, dims, "s0");
+    Hid d0 = pb::internal::owned_dataset(H5Dcreate2(file_.get(), "s0", type.get(), space.get(),
+                                                    H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
+                                         "s0", "create");
+    ChunkWriter writer(2);
+    EXPECT_FALSE(pb::internal::write_encoded_chunks(d0, type.get(), type.get(), 1, dims,
+                                                    ptrs.data(), &writer, "s0"));
+    writer.finish();
+  }
   ChunkWriter writer(2);
   Hid d = pb::internal::create_and_write(file_.get(), "s", type.get(), type.get(), 1, &n,
                                          ptrs.data(), &writer);
