@@ -175,6 +175,7 @@ TruthPlan truth_for(const Case& c) {
           "the closed form holds only until the first contact (its valid_until_s); through and "
           "after the impact the truth is the reference at exact geometry and tight tolerance "
           "(SPEC §3)");
+    case TruthKind::converged:
     case TruthKind::none:
       break;
   }

@@ -9,6 +9,7 @@ PACKAGES=(
   libmujoco-dev libqhull-dev   # mujocoConfig.cmake names /usr/include/libqhull_r
   libbox2d-dev
   libode-dev
+  libcgal-dev                  # convex pieces of concave bodies (CGAL 2-D polygon partitioning)
   libhdf5-dev hdf5-tools
   zlib1g-dev                   # results-file chunks deflated in parallel
   libbenchmark-dev

@@ -53,6 +53,10 @@ constexpr std::size_t kOnsetLogCapacity = 256;
 // touching (a manifold with points) whose float separation came out >= 0
 constexpr double kTouching_m = 1e-12;
 
+// every b2World::Step of this thread: a trace the engine reads before and
+// after build (SPEC §5b: the default mode steps nothing ahead of t = 0)
+thread_local long t_world_steps = 0;
+
 // the contact state of one pair after the latest step
 struct PairSample {
   bool valid = false;
@@ -88,6 +92,8 @@ class Box2dEngine final : public Engine {
   [[nodiscard]] long steps() const override { return steps_; }
   [[nodiscard]] nlohmann::json mapping() const override { return mapping_with_onsets(); }
   [[nodiscard]] nlohmann::json extra_attributes() const override;
+  [[nodiscard]] Physics physics() const override;
+  [[nodiscard]] long steps_before_start() const override { return steps_before_start_; }
 
  private:
   [[nodiscard]] bool inject() const { return settings_.mode == "inject"; }
@@ -130,6 +136,7 @@ class Box2dEngine final : public Engine {
   std::unique_ptr<b2World> world_;
   std::vector<b2Body*> bodies_;  // index = Case::bodies index
   std::string fault_;  // why the run stopped ("" while it did not): it does not go on
+  long steps_before_start_ = 0;  // b2World steps taken during build
 };
 
 std::string Box2dEngine::version() const {
@@ -189,6 +196,7 @@ Capability Box2dEngine::supports(const Case& c) const {
 }
 
 void Box2dEngine::build(const Case& c, const SettingsOverrides& overrides) {
+  const long steps_at_start = t_world_steps;
   settings_ = Box2dSettings{};
   binder_.apply(overrides);
   const Capability cap = supports(c);
@@ -246,6 +254,7 @@ void Box2dEngine::build(const Case& c, const SettingsOverrides& overrides) {
   injected_torque_nm_.assign(c.bodies.size(), 0.0);
   orphan_impulse_ns_ = 0.0;
   sample_pairs();
+  steps_before_start_ = t_world_steps - steps_at_start;
 }
 
 // Debian's libbox2d keeps its asserts (b2Body's constructor asserts finite
@@ -339,9 +348,10 @@ void Box2dEngine::create_joints() {
   mapping_["joints"] = joints;
 }
 
-// the restitution of each pair: fixed for laws whose restitution does not
-// depend on the state, recomputed at each onset otherwise; the value at t = 0
-// uses the closest points then and a free-fall approach speed
+// the restitution of each pair: from the law alone where it does not depend
+// on the state (Hertz, Lankarani-Nikravesh), else set as each contact begins
+// from the state Box2D has then (b2ContactListener::PreSolve). Nothing is
+// estimated ahead of the run.
 void Box2dEngine::map_pairs() {
   nlohmann::json pairs = nlohmann::json::array();
   for (std::size_t k = 0; k < case_.contacts.size(); ++k) {
@@ -352,88 +362,42 @@ void Box2dEngine::map_pairs() {
     pj["body_a"] = case_.bodies[static_cast<std::size_t>(p.body_a)].name;
     pj["body_b"] = case_.bodies[static_cast<std::size_t>(p.body_b)].name;
     pj["law"] = contact_law_name(p.law);
-    // the configuration at t = 0: closest points and normal (Box2D's
-    // narrow phase, or the closed forms in injection mode)
-    const std::size_t ia = static_cast<std::size_t>(p.body_a);
-    const std::size_t ib = static_cast<std::size_t>(p.body_b);
-    const Body& ba = case_.bodies[ia];
-    const Body& bb = case_.bodies[ib];
-    bool valid = false;
-    Vec2 normal = Vec2::Zero();
-    Vec2 point = Vec2::Zero();
-    double gap = 0.0;
-    if (inject()) {
-      const PrimitiveContact pc = primitive_contact(ba.shape, Pose{ba.position_m, ba.angle_rad},
-                                                    bb.shape, Pose{bb.position_m, bb.angle_rad});
-      valid = true;
-      normal = pc.normal;
-      point = pc.point_m;
-      gap = -pc.penetration_m;
-    } else {
-      const ContactGeometry g = probe_contact(*bodies_[ia], *bodies_[ib]);
-      valid = g.valid;
-      normal = g.normal;
-      point = g.point_m;
-      gap = -g.penetration_m;
-    }
-    double m_eff = kNaN;
-    double v_est = kMinApproachSpeed_mps;
-    if (valid) {
-      m_eff = effective_mass_kg(inertia_[ia], inertia_[ib], point, normal);
-      const double v_n = std::max(0.0, -normal.dot(bb.velocity_mps - ba.velocity_mps));
-      v_est = std::max(kMinApproachSpeed_mps,
-                       std::sqrt(v_n * v_n + 2.0 * case_.gravity_mps2.norm() * std::max(0.0, gap)));
-    }
-    if (!std::isfinite(m_eff)) {
-      // no measurable configuration: the lighter moving body stands for m_eff
-      m_eff = std::numeric_limits<double>::infinity();
-      for (const Body* b : {&ba, &bb}) {
-        if (!b->fixed) m_eff = std::min(m_eff, b->mass_kg);
-      }
-    }
-    if (!std::isfinite(m_eff)) {
+    if (case_.bodies[static_cast<std::size_t>(p.body_a)].fixed &&
+        case_.bodies[static_cast<std::size_t>(p.body_b)].fixed) {
       pj["note"] = "both bodies are fixed: the pair never moves into contact";
       pairs.push_back(pj);
       continue;
     }
-    pj["m_eff_at_t0_kg"] = m_eff;
-    pj["approach_speed_estimate_mps"] = v_est;
-    pj["estimate_rule"] =
-        "m_eff = 1 / (J M^-1 J^T) along the normal at the closest points at t = 0; approach speed "
-        "= "
-        "sqrt(v_n(0)^2 + 2 |g| gap(0)) (free fall through the initial gap)";
     if (inject()) {
       pj["expressed_as"] =
           "the case's law itself (contact_force_n), applied with b2Body::ApplyForce at the contact "
           "point, equal and opposite on the two bodies, from the state at the start of each step; "
           "penetration, normal and point from closed-form geometry of the exact shapes; "
           "Lankarani-Nikravesh's approach speed latched at the first step with penetration > 0";
-      // explicit forces need many steps per contact (stability and accuracy)
-      const double duration = elastic_contact_duration_s(p.law, m_eff, v_est);
-      const double steps = duration / settings_.dt_s;
-      pj["contact_duration_estimate_s"] = duration;
-      pj["steps_per_contact_estimate"] = steps;
-      if (steps < 20.0) {
-        pj["warning"] = fmt::format(
-            "about {:.3g} steps per contact: explicit forces need dt well below the contact "
-            "duration (e.g. dt <= {:.2g} s for 20 steps)",
-            steps, duration / 20.0);
-      }
+      pj["warning"] =
+          "explicit forces need many steps per contact: a Kelvin-Voigt contact lasts about "
+          "pi sqrt(m_eff / k), and dt should be a twentieth of that or less";
       pairs.push_back(pj);
       continue;
     }
     st.per_onset = restitution_depends_on_state(p.law);
-    st.restitution = law_restitution(p.law, m_eff, v_est);
     pj["restitution_method"] = law_restitution_method(p.law);
-    pj["restitution_at_t0"] = st.restitution;
     if (st.per_onset) {
       pj["restitution_used"] =
-          "recomputed at every contact onset (b2ContactListener::BeginContact) from the manifold "
-          "point and normal, m_eff there and the measured normal approach speed; listed in onsets";
+          "set in b2ContactListener::PreSolve when a contact of the pair begins (its first "
+          "PreSolve), from the state Box2D has then: the pair's touching manifold points as one "
+          "contact at their depth-weighted centroid (SPEC §1; a face landing flat: its middle), "
+          "its effective mass 1 / (J M^-1 J^T) along the deepest point's normal, and the largest "
+          "normal approach speed among the points; set on every touching contact of the pair; "
+          "listed in onsets";
     } else {
+      // scale invariance: any m_eff and approach speed give the same value
+      st.restitution = law_restitution(p.law, 1.0, 1.0);
+      pj["restitution"] = st.restitution;
       pj["restitution_used"] =
-          "the value at t = 0 for every contact: this law's restitution does not depend on m_eff "
-          "or the approach speed (scale invariance of F = K delta^n (1 + a delta_dot / v0))";
+          "the law's own restitution, the same for every contact: it does not depend on m_eff "
+          "or the approach speed (scale invariance of F = K delta^n (1 + a delta_dot / v0)); "
+          "computed from the law alone";
     }
     if (const auto* ln = std::get_if<LankaraniNikravesh>(&p.law)) {
       pj["nominal_restitution"] = ln->restitution;
@@ -461,6 +425,7 @@ void Box2dEngine::step() {
   if (inject()) apply_injected_forces();
   for (auto& st : pair_states_) st.step_impulse_ns = 0.0;
   world_->Step(dt, settings_.velocity_iterations, settings_.position_iterations);
+  ++t_world_steps;
   ++steps_;
   time_s_ = static_cast<double>(steps_) * settings_.dt_s;
   check_state();
@@ -664,12 +629,38 @@ nlohmann::json Box2dEngine::mapping_with_onsets() const {
     onsets.push_back({{"time_s", r.time_s},
                       {"contact", case_.contacts[static_cast<std::size_t>(r.pair)].name},
                       {"m_eff_kg", r.m_eff_kg},
+                      {"points", r.points},
                       {"approach_speed_mps", r.approach_mps},
                       {"restitution", r.restitution}});
   }
   j["onsets"] = onsets;
   j["onsets_not_logged"] = listener_.unlogged();
   return j;
+}
+
+Physics Box2dEngine::physics() const {
+  Physics p;
+  p.mode = settings_.mode;
+  if (inject()) {
+    p.collision_by = "adapter";
+    p.collision =
+        "the adapter's closed-form geometry of the exact shapes (the pairs do not collide in "
+        "Box2D)";
+    p.contact_force_by = "adapter (case law)";
+    p.contact_force = "the case's law applied with b2Body::ApplyForce; Box2D integrates it";
+    p.parameters = "the case's law as stated";
+    return p;
+  }
+  p.collision_by = "engine";
+  p.collision = "Box2D's own narrow phase (b2Contact manifolds of circles, polygons, edge chains)";
+  p.contact_force_by = "engine";
+  p.contact_force = "Box2D's rigid contact solver (sequential impulses with restitution)";
+  p.parameters =
+      "each contact's restitution set as it begins (b2ContactListener::PreSolve) from the law at "
+      "the approach speed and the effective mass at the depth-weighted centroid of the pair's "
+      "touching manifold points then (the law alone for Hertz and Lankarani-Nikravesh, whose "
+      "restitution is scale-free)";
+  return p;
 }
 
 nlohmann::json Box2dEngine::extra_attributes() const {

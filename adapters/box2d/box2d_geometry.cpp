@@ -12,6 +12,7 @@
 #include <limits>
 
 #include "box2d_frame.hpp"
+#include "planarbench/convex_pieces.hpp"
 #include "planarbench/errors.hpp"
 #include "planarbench/outline.hpp"
 #include "planarbench/overloaded.hpp"
@@ -179,16 +180,69 @@ Fan convex_fan(const std::vector<Vec2>& outline, const Vec2& centre, int max_out
   return fan;
 }
 
+namespace {
+
+// The convex Box2D polygons of an ellipse or a polygon, before any fixture
+// is made: a convex outline inset by the skin and cut into a fan around the
+// body origin (centre + up to kFanOutlineVertices outline points per piece);
+// a non-convex polygon cut by CGAL into convex pieces of at most
+// b2_maxPolygonVertices points (planarbench/convex_pieces.hpp), each inset by
+// the skin. `error` says why Box2D cannot take it.
+struct BodyPieces {
+  std::vector<std::vector<Vec2>> pieces;
+  std::string how;
+  std::string error;
+};
+
+BodyPieces body_pieces(const Body& body) {
+  BodyPieces out;
+  const double skin = skin_m();
+  const std::vector<Vec2> outline = make_outline(body.shape, body.outline_points);
+  const auto* polygon = std::get_if<Polygon>(&body.shape);
+  if (polygon == nullptr || pb::is_convex_ccw(polygon->points_m, 1e-12)) {
+    const std::vector<Vec2> inset = inset_outline(outline, skin);
+    Fan fan = convex_fan(inset, Vec2::Zero(), kFanOutlineVertices);
+    if (!fan.error.empty()) {
+      out.error = fmt::format("body '{}': {}", body.name, fan.error);
+      return out;
+    }
+    out.pieces = std::move(fan.pieces);
+    out.how = fmt::format(
+        "{} convex b2PolygonShape pieces (the centre and up to {} consecutive outline points "
+        "each, at most b2_maxPolygonVertices = {}) of the {}-point outline inset by the skin "
+        "{} m, so that the skinned pieces' union has the outline's edges",
+        out.pieces.size(), kFanOutlineVertices, b2_maxPolygonVertices, outline.size(), skin);
+    return out;
+  }
+  const ConvexDecomposition parts = convex_pieces(polygon->points_m, b2_maxPolygonVertices);
+  for (std::size_t k = 0; k < parts.pieces.size(); ++k) {
+    std::vector<Vec2> inset = inset_outline(parts.pieces[k], skin);
+    if (!is_convex_ccw(inset)) {
+      out.error = fmt::format(
+          "body '{}': convex piece {} of the non-convex polygon is thinner than Box2D's skin "
+          "(2 x b2_polygonRadius = {} m): its skinned polygon cannot have the piece's edges",
+          body.name, k, 2.0 * skin);
+      out.pieces.clear();
+      return out;
+    }
+    out.pieces.push_back(std::move(inset));
+  }
+  out.how = fmt::format(
+      "{} convex b2PolygonShape pieces of the non-convex {}-point polygon ({}; at most "
+      "b2_maxPolygonVertices = {} points each), each inset by the skin {} m so that the skinned "
+      "pieces have the polygon's edges",
+      out.pieces.size(), polygon->points_m.size(), parts.method, b2_maxPolygonVertices, skin);
+  return out;
+}
+
+}  // namespace
+
 std::string unsupported_shape_reason(const Body& body) {
   if (std::holds_alternative<HalfPlane>(body.shape)) {
     return body.fixed ? "" : "a moving half-plane has no Box2D counterpart (infinite surface)";
   }
   if (std::holds_alternative<Circle>(body.shape)) return "";
-  const std::vector<Vec2> outline =
-      inset_outline(make_outline(body.shape, body.outline_points), skin_m());
-  const Fan fan = convex_fan(outline, Vec2::Zero(), kFanOutlineVertices);
-  if (!fan.error.empty()) return fmt::format("body '{}': {}", body.name, fan.error);
-  return "";
+  return body_pieces(body).error;
 }
 
 double bounding_radius_m(const Shape& shape) {
@@ -251,20 +305,13 @@ nlohmann::json add_fixtures(b2Body& body, const Body& case_body, const FixtureOp
     return j;
   }
 
-  // ellipse, polygon: inset outline, fan of convex pieces around the origin
-  const std::vector<Vec2> outline =
-      inset_outline(make_outline(case_body.shape, case_body.outline_points), skin);
-  const Fan fan = convex_fan(outline, Vec2::Zero(), kFanOutlineVertices);
-  if (!fan.error.empty())
-    throw EngineError(fmt::format("body '{}': {}", case_body.name, fan.error));
-  const int pieces = add_polygon_pieces(body, fan.pieces, options, case_body.name);
-  j["box2d"] = fmt::format(
-      "{} convex b2PolygonShape pieces (the centre and up to {} consecutive outline points "
-      "each, at most b2_maxPolygonVertices = {}) of the {}-point outline inset by the skin "
-      "{} m, so that the skinned pieces' union has the outline's edges",
-      pieces, kFanOutlineVertices, b2_maxPolygonVertices, outline.size(), skin);
+  // ellipse, polygon: convex pieces, each inset by the skin
+  const BodyPieces bp = body_pieces(case_body);
+  if (!bp.error.empty()) throw EngineError(bp.error);
+  const int pieces = add_polygon_pieces(body, bp.pieces, options, case_body.name);
+  j["box2d"] = bp.how;
   j["fixtures"] = pieces;
-  j["outline_points"] = outline.size();
+  j["outline_points"] = make_outline(case_body.shape, case_body.outline_points).size();
   j["inset_m"] = skin;
   return j;
 }

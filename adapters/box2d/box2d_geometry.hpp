@@ -1,4 +1,6 @@
-// Case shapes as Box2D fixtures. Box2D's polygons and edges carry a skin of
+// Case shapes as Box2D fixtures. A non-convex polygon becomes convex pieces
+// (CGAL's partition, planarbench/convex_pieces.hpp), each a fixture of the
+// same body. Box2D's polygons and edges carry a skin of
 // b2_polygonRadius (0.01 m) around their core, and collide with the skinned
 // surface: the adapter moves every core inward by the skin so that the
 // surface Box2D collides is the case's own surface (circles carry no skin).
@@ -48,7 +50,9 @@ struct Fan {
 [[nodiscard]] Fan convex_fan(const std::vector<Vec2>& outline, const Vec2& centre,
                              int max_outline_vertices);
 
-// true when the closed polygon turns left at every vertex (strictly convex, CCW)
+// true when the closed polygon turns left at every vertex, clearly so: sin
+// of every turn above 1e-6, so that Box2D's float hull keeps every vertex
+// (strictly convex, CCW; planarbench/convex_pieces.hpp has the tolerant test)
 [[nodiscard]] bool is_convex_ccw(const std::vector<Vec2>& polygon);
 
 // Why Box2D cannot build this body ("" when it can).

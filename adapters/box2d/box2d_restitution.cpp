@@ -11,30 +11,6 @@
 namespace pb::internal::box2d {
 
 namespace {
-double cross(const Vec2& a, const Vec2& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-}  // namespace
-
-double inverse_effective_mass(const BodyInertia& body, const Vec2& p_m, const Vec2& n) {
-  if (body.fixed) return 0.0;
-  if (body.pinned) {
-    const double lever = cross(p_m - body.pivot_m, n);  // m
-    const double inertia_pivot =
-        body.inertia_kgm2 + body.mass_kg * (body.centre_m - body.pivot_m).squaredNorm();
-    return lever * lever / inertia_pivot;
-  }
-  const double lever = cross(p_m - body.centre_m, n);  // m
-  return 1.0 / body.mass_kg + lever * lever / body.inertia_kgm2;
-}
-
-double effective_mass_kg(const BodyInertia& a, const BodyInertia& b, const Vec2& p_m,
-                         const Vec2& n) {
-  const double inv = inverse_effective_mass(a, p_m, n) + inverse_effective_mass(b, p_m, n);
-  return inv > 0.0 ? 1.0 / inv : std::numeric_limits<double>::infinity();
-}
-
-namespace {
 bool closed_form(const ContactLaw& law) {
   const auto* kv = std::get_if<KelvinVoigt>(&law);
   return kv != nullptr && kv->damping_depth_m == 0.0;

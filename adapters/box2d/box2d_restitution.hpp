@@ -6,31 +6,14 @@
 #include <string>
 
 #include "planarbench/case.hpp"
+#include "planarbench/contact_set_mass.hpp"
 
 namespace pb::internal::box2d {
 
 // how a body responds to an impulse: fixed, free, or pinned to the ground by
-// one revolute joint
-struct BodyInertia {
-  bool fixed = false;
-  double mass_kg = 0.0;          // kg
-  double inertia_kgm2 = 0.0;     // kg m^2 about the centre of mass
-  Vec2 centre_m = Vec2::Zero();  // m, centre of mass, world
-  bool pinned = false;
-  Vec2 pivot_m = Vec2::Zero();  // m, the joint's world anchor when pinned
-};
-
-// J M^-1 J^T for a unit impulse along the unit normal n at world point p, 1/kg
-// (constrained dynamics, e.g. Featherstone, Rigid Body Dynamics Algorithms, §11):
-//   fixed: 0; free: 1/m + ((p - c) x n)^2 / I;
-//   pinned at q: ((p - q) x n)^2 / (I + m |c - q|^2)  (rotation about q only).
-[[nodiscard]] double inverse_effective_mass(const BodyInertia& body, const Vec2& p_m,
-                                            const Vec2& n);
-
-// m_eff = 1 / (J_a M_a^-1 J_a^T + J_b M_b^-1 J_b^T), kg; infinite when neither
-// body can move along n
-[[nodiscard]] double effective_mass_kg(const BodyInertia& a, const BodyInertia& b, const Vec2& p_m,
-                                       const Vec2& n);
+// one revolute joint (planarbench/contact_set_mass.hpp computes the
+// effective mass of one point, 1 / (J M^-1 J^T), and of a set of points)
+using BodyInertia = PlanarInertia;
 
 // approach speeds below this are raised to it before the law is evaluated, m/s
 // (simulate_collision needs v > 0; the restitution of Kelvin-Voigt without

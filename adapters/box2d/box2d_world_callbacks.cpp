@@ -4,6 +4,10 @@
 #include <box2d/b2_contact.h>
 #include <box2d/b2_fixture.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "box2d_frame.hpp"
 
 namespace pb::internal::box2d {
@@ -36,42 +40,80 @@ bool PairContactFilter::ShouldCollide(b2Fixture* fixture_a, b2Fixture* fixture_b
   return enabled_ && pairs_.pair(body_index(*fixture_a), body_index(*fixture_b)) >= 0;
 }
 
-void PairContactListener::BeginContact(b2Contact* contact) {
+void PairContactListener::PreSolve(b2Contact* contact, const b2Manifold* old_manifold) {
+  // only a contact that begins now: its old manifold had no points
+  if (old_manifold->pointCount > 0) return;
   const int ia = body_index(*contact->GetFixtureA());
   const int ib = body_index(*contact->GetFixtureB());
   const int k = pairs_.pair(ia, ib);
   if (k < 0) return;
   PairState& st = states_[static_cast<std::size_t>(k)];
+  b2Body& body_a = *contact->GetFixtureA()->GetBody();
   if (st.per_onset) {
-    // the manifold is fresh (b2Contact::Update): its normal points from
-    // fixture A to fixture B, its points lie midway between the surfaces
-    b2WorldManifold wm;
-    contact->GetWorldManifold(&wm);
-    const int count = contact->GetManifold()->pointCount;
-    Vec2 p = Vec2::Zero();
-    for (int i = 0; i < count; ++i) p += from_b2(wm.points[i]);
-    p /= static_cast<double>(count);
-    const Vec2 n = from_b2(wm.normal);
-    const b2Body& body_a = *contact->GetFixtureA()->GetBody();
-    const b2Body& body_b = *contact->GetFixtureB()->GetBody();
-    BodyInertia a = inertia_[static_cast<std::size_t>(ia)];
-    BodyInertia b = inertia_[static_cast<std::size_t>(ib)];
-    a.centre_m = from_b2(body_a.GetWorldCenter());
-    b.centre_m = from_b2(body_b.GetWorldCenter());
-    const double m_eff = effective_mass_kg(a, b, p, n);
-    const Vec2 v_rel =
-        point_velocity(body_state(body_b), p) - point_velocity(body_state(body_a), p);
-    const double approach = -n.dot(v_rel);
-    st.restitution = law_restitution(st.law, m_eff, approach);
-    if (log_.size() < log_.capacity()) {
-      log_.push_back(OnsetRecord{time_s_, k, m_eff, approach, st.restitution});
-    } else {
-      ++unlogged_;
+    // the manifold points of every touching contact of the pair (this one's
+    // is fresh, b2Contact::Update; the others were updated this step or keep
+    // last step's): the pair's contact is their depth-weighted centroid (SPEC
+    // §1), along the deepest point's normal from the case pair's body a to b
+    const BodyState sa = body_state(body_a);
+    const BodyState sb = body_state(*contact->GetFixtureB()->GetBody());
+    double weight = 0.0;          // m, sum of the depths
+    Vec2 moment = Vec2::Zero();   // m^2
+    Vec2 mean = Vec2::Zero();     // m, plain sum (all depths zero)
+    int points = 0;
+    double deepest = -std::numeric_limits<double>::infinity();
+    Vec2 normal = Vec2::Zero();
+    double approach = 0.0;  // m/s, the largest normal approach speed among the points
+    for (b2ContactEdge* e = body_a.GetContactList(); e != nullptr; e = e->next) {
+      b2Contact* c = e->contact;
+      if (!c->IsTouching()) continue;
+      const int ca = body_index(*c->GetFixtureA());
+      const int cb = body_index(*c->GetFixtureB());
+      if (pairs_.pair(ca, cb) != k) continue;
+      b2WorldManifold wm;
+      c->GetWorldManifold(&wm);
+      // the manifold normal points from fixture A to fixture B
+      const Vec2 n = ca == ia ? from_b2(wm.normal) : Vec2(-from_b2(wm.normal));
+      for (int i = 0; i < c->GetManifold()->pointCount; ++i) {
+        const Vec2 p = from_b2(wm.points[i]);
+        const double depth = -static_cast<double>(wm.separations[i]);
+        if (depth > deepest) {
+          deepest = depth;
+          normal = n;
+        }
+        weight += std::max(depth, 0.0);
+        moment += std::max(depth, 0.0) * p;
+        mean += p;
+        ++points;
+        const double v = -n.dot(point_velocity(sb, p) - point_velocity(sa, p));
+        approach = points == 1 ? v : std::max(approach, v);
+      }
+    }
+    if (points > 0) {
+      const Vec2 at = weight > 0.0 ? Vec2(moment / weight) : Vec2(mean / points);
+      BodyInertia a = inertia_[static_cast<std::size_t>(ia)];
+      BodyInertia b = inertia_[static_cast<std::size_t>(ib)];
+      a.centre_m = sa.position_m;
+      b.centre_m = sb.position_m;
+      const double m_eff = point_effective_mass_kg(a, b, at, normal);
+      if (m_eff > 0.0 && std::isfinite(m_eff)) {
+        st.restitution = law_restitution(st.law, m_eff, approach);
+        if (log_.size() < log_.capacity()) {
+          log_.push_back(OnsetRecord{time_s_, k, m_eff, points, approach, st.restitution});
+        } else {
+          ++unlogged_;
+        }
+      }
     }
   }
-  contact->SetRestitution(static_cast<float>(st.restitution));
-  contact->SetRestitutionThreshold(static_cast<float>(st.threshold_mps));
-  contact->SetFriction(0.0f);
+  // the same restitution on every touching contact of the pair
+  for (b2ContactEdge* e = body_a.GetContactList(); e != nullptr; e = e->next) {
+    b2Contact* c = e->contact;
+    if (c != contact && !c->IsTouching()) continue;
+    if (pairs_.pair(body_index(*c->GetFixtureA()), body_index(*c->GetFixtureB())) != k) continue;
+    c->SetRestitution(static_cast<float>(st.restitution));
+    c->SetRestitutionThreshold(static_cast<float>(st.threshold_mps));
+    c->SetFriction(0.0f);
+  }
 }
 
 void PairContactListener::PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) {

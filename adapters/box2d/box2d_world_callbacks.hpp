@@ -55,21 +55,29 @@ struct PairState {
 struct OnsetRecord {
   double time_s = 0.0;  // s, start of the step in which the contact began
   int pair = -1;
-  double m_eff_kg = 0.0;      // kg, J M^-1 J^T along the manifold normal at the manifold point
+  double m_eff_kg = 0.0;      // kg, at the depth-weighted centroid of the pair's manifold points
+  int points = 0;             // those points
   double approach_mps = 0.0;  // m/s, normal approach speed at that point
   double restitution = 0.0;
 };
 
-// Sets each contact's restitution when it begins (b2Contact::SetRestitution
-// persists for the contact's life, so Box2D's max-mixing of fixture values
-// never applies) and sums the solver's normal impulses per pair.
+// Sets each contact's restitution when it begins, in its first PreSolve
+// (b2Contact::SetRestitution persists for the contact's life, so Box2D's
+// max-mixing of fixture values never applies), from the state Box2D has then:
+// the pair's touching manifold points (every touching contact of the two
+// bodies: a face on a face, the pieces of a concave body) are one contact
+// at their depth-weighted centroid (SPEC §1), whose effective mass
+// 1 / (J M^-1 J^T) along the deepest point's normal and the largest normal
+// approach speed among the points give the law's restitution; the value
+// goes to every touching contact of the pair. Sums the solver's normal
+// impulses per pair.
 class PairContactListener final : public b2ContactListener {
  public:
   PairContactListener(const PairTable& pairs, std::vector<PairState>& states,
                       const std::vector<BodyInertia>& inertia, const double& time_s)
       : pairs_(pairs), states_(states), inertia_(inertia), time_s_(time_s) {}
 
-  void BeginContact(b2Contact* contact) override;
+  void PreSolve(b2Contact* contact, const b2Manifold* old_manifold) override;
   void PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) override;
 
   void reserve_log(std::size_t capacity) { log_.reserve(capacity); }
@@ -80,6 +88,7 @@ class PairContactListener final : public b2ContactListener {
   const PairTable& pairs_;
   std::vector<PairState>& states_;
   const std::vector<BodyInertia>& inertia_;  // per case body; centre and pivot are t = 0 values
+
   const double& time_s_;
   std::vector<OnsetRecord> log_;  // bounded by its reserved capacity
   long unlogged_ = 0;

@@ -1,10 +1,15 @@
 // The mujoco adapter: engine "mujoco" (MuJoCo 2.2.2, Debian's libmujoco-dev).
 // A case becomes MJCF text (mujoco_mjcf), loaded from memory; each step is
 // MuJoCo's own mj_step in two halves so that the state a step starts from is
-// sampled (mujoco_stepping). Native mode maps the case's law onto MuJoCo's
-// soft contact (mujoco_contact_mapping), calibrated at each pair's first touch
-// found by a contact-free probe run (mujoco_probe); inject mode applies the
-// case's own law at MuJoCo's contact geometry (mujoco_injector).
+// sampled (mujoco_stepping). Modes:
+//   native (default) MuJoCo's collision and soft contact, each pair's solref
+//          set at every step from the case's law and the effective mass of
+//          the current configuration (mujoco_solref_rule): no look-ahead;
+//   oracle the law mapped once onto solref, calibrated at each pair's first
+//          touch found by a contact-free probe run (mujoco_probe,
+//          mujoco_contact_mapping): foreknowledge, opt-in;
+//   inject the case's own law applied at MuJoCo's contact geometry
+//          (mujoco_injector).
 #include "planarbench/adapters/mujoco_engine.hpp"
 
 #include <fmt/format.h>
@@ -25,6 +30,7 @@
 #include "mujoco_pair_state.hpp"
 #include "mujoco_probe.hpp"
 #include "mujoco_settings.hpp"
+#include "mujoco_solref_rule.hpp"
 #include "mujoco_stepping.hpp"
 #include "mujoco_support.hpp"
 #include "planarbench/contact_law_response.hpp"
@@ -68,7 +74,7 @@ class MujocoEngine final : public Engine {
                        mjVERSION_HEADER);
   }
   Capability supports(const Case& c) const override {
-    return mujoco_capability(c, settings_.mode == "inject");
+    return mujoco_capability(c, settings_.mode);
   }
   const SettingsBinder& settings() const override { return binder_; }
 
@@ -81,11 +87,16 @@ class MujocoEngine final : public Engine {
   long steps() const override { return steps_; }
   nlohmann::json mapping() const override;
   nlohmann::json extra_attributes() const override;
+  Physics physics() const override;
+  long steps_before_start() const override { return probe_steps_; }
 
  private:
   MjcfOptions base_options() const;
   PairParams pair_params(std::size_t k, bool inactive) const;
   Calibration calibration(std::size_t k, const FirstTouch& t) const;
+  void build_oracle(nlohmann::json& pairs, nlohmann::json& lost);
+  nlohmann::json native_pair_json(std::size_t k) const;
+  void add_soft_contact_notes(nlohmann::json& lost) const;
   void ensure_current();
   void check_warnings();
   void sample();
@@ -98,11 +109,14 @@ class MujocoEngine final : public Engine {
   Case case_;
   double dt_s_ = 1e-4;
   bool inject_ = false;
+  bool oracle_ = false;
+  long probe_steps_ = 0;  // MuJoCo steps taken during build (the oracle's probe run)
   ModelPtr model_;
   DataPtr data_;
   ModelLayout layout_;
   std::optional<Scratch> scratch_;
   std::unique_ptr<ForceInjector> injector_;
+  std::unique_ptr<SolrefRule> rule_;  // native mode
   WarningWatch watch_;
   std::vector<PairObservation> obs_;  // at the current state
   std::vector<Vec2> last_point_m_;    // per pair: last contact point seen
@@ -167,68 +181,139 @@ Calibration MujocoEngine::calibration(std::size_t k, const FirstTouch& t) const 
   return cal;
 }
 
+// oracle: the law mapped once onto each pair's solref, calibrated at the
+// pair's first touch in a contact-free probe run (foreknowledge)
+void MujocoEngine::build_oracle(nlohmann::json& pairs, nlohmann::json& lost) {
+  const std::size_t np = case_.contacts.size();
+  MjcfOptions options = base_options();
+  for (std::size_t k = 0; k < np; ++k) options.pairs.push_back(pair_params(k, true));
+  const ModelPtr inactive = load_mjcf(write_mjcf(case_, options));
+  layout_ = model_layout(inactive.get(), case_);
+  // where and how each pair first meets: calibrates the solref and tells how
+  // many steps an impact spans
+  long probe_steps = 0;
+  const auto touch =
+      probe_first_touch(inactive.get(), case_, layout_, case_.duration_s, probe_steps);
+  options.pairs.clear();
+  for (std::size_t k = 0; k < np; ++k) {
+    if (!layout_.pairs[k].present) {
+      options.pairs.push_back(pair_params(k, false));
+      pairs.push_back({{"law", contact_law_name(case_.contacts[k].law)},
+                       {"expressed_as", "nothing: both bodies are fixed"}});
+      continue;
+    }
+    const LawMapping lm = map_contact_law(case_.contacts[k].law, calibration(k, touch[k]));
+    PairParams p = pair_params(k, false);
+    p.solref = lm.solref;
+    options.pairs.push_back(p);
+    pairs.push_back(lm.json);
+    const double steps = lm.force_duration_s / dt_s_;
+    pairs.back()["steps_per_impact"] = steps;
+    if (steps < kMinStepsPerImpact) {
+      lost.push_back(fmt::format(
+          "pair '{}': one impact's force phase ({:.3g} s) spans only {:.3g} steps of {} s; "
+          "the impact is not resolved (use mujoco.dt <= {:.2g})",
+          case_.contacts[k].name, lm.force_duration_s, steps, dt_s_,
+          lm.force_duration_s / (2.0 * kMinStepsPerImpact)));
+    }
+  }
+  model_ = load_mjcf(write_mjcf(case_, options));
+  layout_ = model_layout(model_.get(), case_);
+  add_soft_contact_notes(lost);
+  lost.push_back(
+      "solref is per unit effective mass at one configuration (the first touch); where the "
+      "effective mass changes with pose or contact point the physical stiffness changes "
+      "with it");
+}
+
+// native: what pair k's law becomes, before the run (the rule, no numbers
+// from the future)
+nlohmann::json MujocoEngine::native_pair_json(std::size_t k) const {
+  const ContactLaw& law = case_.contacts[k].law;
+  nlohmann::json j;
+  j["law"] = contact_law_name(law);
+  j["expressed_as"] =
+      "MuJoCo's soft contact on every contact MuJoCo's collider reports for the pair, one "
+      "direct solref for the pair set at every evaluation of the dynamics (after mj_collision, "
+      "before mj_makeConstraint) from the state the step starts from";
+  j["solref_rule"] =
+      "solref = (-sigma k, -c) / m_set: (k, c) the law at the pair's penetration delta (its "
+      "deepest contact) as a linear spring-damper; m_set = 1^T A^+ 1 with A = J M^-1 J^T of the "
+      "pair's pressed contacts from MuJoCo's mj_jac and mj_solveM (one contact: "
+      "1 / (J M^-1 J^T)); sigma = delta / delta_w, delta_w = w^T r / m_set, w = A^+ 1, so that "
+      "the rows' springs sum to k delta (SPEC §1, one force per pair) and their dampers to c "
+      "times the rows' w-weighted mean normal speed";
+  if (const auto* kv = std::get_if<KelvinVoigt>(&law)) {
+    j["law_as_spring_damper"] =
+        kv->damping_depth_m > 0.0
+            ? "Kelvin-Voigt: k = K, c = c times the ramp's cubic step at delta"
+            : "Kelvin-Voigt: k = K, c = c (exact: the law is a linear spring-damper)";
+  } else if (std::holds_alternative<Hertz>(law)) {
+    j["law_as_spring_damper"] = "Hertz: k = K delta^(n-1) (secant at delta), c = 0";
+  } else {
+    j["law_as_spring_damper"] =
+        "Lankarani-Nikravesh: k = K delta^(n-1) (secant at delta), c = K delta^n 3 (1 - e^2) / 4 "
+        "/ delta_dot^-, delta_dot^- the normal approach speed at the pair's first step pressed";
+  }
+  return j;
+}
+
+void MujocoEngine::add_soft_contact_notes(nlohmann::json& lost) const {
+  const double d = settings_.solimp[1];
+  lost.push_back(fmt::format(
+      "MuJoCo's soft contact with impedance d = {}: the constraint acceleration is "
+      "(1 - d) a0 - b v - k r (a0: acceleration without the contact), so inside a contact "
+      "the share d of gravity is removed from the contact's own dynamics: a resting contact "
+      "carries m g at a penetration (1 - d) m g / k (~0) instead of m g / k, and an impact "
+      "runs as the spring-damper without gravity (the clamp releases at k delta + c "
+      "delta_dot = -d m_eff a0.n instead of 0)",
+      d));
+  lost.push_back(
+      "the reported force is MuJoCo's constraint force: m_eff (k delta + c delta_dot) plus "
+      "the share d of the normal load of gravity");
+}
+
 void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
   binder_.apply(overrides);
   validate_mujoco_settings(settings_, overrides);
   inject_ = settings_.mode == "inject";
-  const Capability cap = mujoco_capability(c, inject_);
+  oracle_ = settings_.mode == "oracle";
+  const Capability cap = mujoco_capability(c, settings_.mode);
   if (cap.support == Support::unsupported) {
     throw EngineError("mujoco: cannot run case '" + c.name + "': " + cap.reason);
   }
   case_ = c;
   dt_s_ = settings_.dt_s;
   steps_ = 0;
+  probe_steps_ = 0;
   tracker_ = EpisodeTracker{};
   injector_.reset();
+  rule_.reset();
   const std::size_t np = case_.contacts.size();
-
-  // every pair inactive: the inject model, and the probe of the native one
-  MjcfOptions options = base_options();
-  for (std::size_t k = 0; k < np; ++k) options.pairs.push_back(pair_params(k, true));
-  ModelPtr inactive = load_mjcf(write_mjcf(case_, options));
-  layout_ = model_layout(inactive.get(), case_);
+  // every MuJoCo step this build takes (a trace, not the probe's own count)
+  const long steps_at_start = integrations_on_this_thread();
 
   nlohmann::json pairs = nlohmann::json::array();
   nlohmann::json lost = nlohmann::json::array();
-  // where and how each pair first meets: calibrates native mode's solref and
-  // tells both modes how many steps an impact spans
-  const auto touch = probe_first_touch(inactive.get(), case_, layout_, case_.duration_s);
-  auto note_resolution = [&](std::size_t k, double force_duration_s, nlohmann::json& pair) {
-    const double steps = force_duration_s / dt_s_;
-    pair["steps_per_impact"] = steps;
-    if (steps < kMinStepsPerImpact) {
-      lost.push_back(fmt::format(
-          "pair '{}': one impact's force phase ({:.3g} s) spans only {:.3g} steps of {} s; "
-          "the impact is not resolved (use mujoco.dt <= {:.2g})",
-          case_.contacts[k].name, force_duration_s, steps, dt_s_,
-          force_duration_s / (2.0 * kMinStepsPerImpact)));
-    }
-  };
   auto not_simulated = [&](std::size_t k) {
     return nlohmann::json{{"law", contact_law_name(case_.contacts[k].law)},
                           {"expressed_as", "nothing: both bodies are fixed"}};
   };
   if (inject_) {
-    model_ = std::move(inactive);
+    // every pair inactive: MuJoCo finds the contacts, the adapter applies the law
+    MjcfOptions options = base_options();
+    for (std::size_t k = 0; k < np; ++k) options.pairs.push_back(pair_params(k, true));
+    model_ = load_mjcf(write_mjcf(case_, options));
+    layout_ = model_layout(model_.get(), case_);
     for (std::size_t k = 0; k < np; ++k) {
       if (!layout_.pairs[k].present) {
         pairs.push_back(not_simulated(k));
         continue;
       }
-      const Calibration cal = calibration(k, touch[k]);
-      // the law's own impact at the calibration (a linear law's duration
-      // does not depend on the speed: 1 m/s when the pair starts at rest)
-      const double v = cal.approach_speed_mps > 0.0 ? cal.approach_speed_mps : 1.0;
-      const CollisionResponse r =
-          simulate_collision(case_.contacts[k].law, cal.effective_mass_kg, v);
       pairs.push_back({{"law", contact_law_name(case_.contacts[k].law)},
                        {"expressed_as",
                         "the case's own law (contact_force_n) applied by the adapter at the "
-                        "deepest MuJoCo contact of the pair"},
-                       {"effective_mass_kg", cal.effective_mass_kg},
-                       {"effective_mass_from", cal.source},
-                       {"law_force_duration_s", r.force_duration_s}});
-      note_resolution(k, r.force_duration_s, pairs.back());
+                        "deepest MuJoCo contact of the pair"}});
     }
     lost.push_back(
         "the force acts at MuJoCo's contact geometry (deepest contact of the pair, its "
@@ -237,39 +322,34 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
     lost.push_back(
         "Lankarani-Nikravesh's approach speed is the normal rate at the first step with "
         "penetration > 0 (not at the interpolated onset)");
+  } else if (oracle_) {
+    build_oracle(pairs, lost);
   } else {
-    options.pairs.clear();
+    // native: every pair active from the start; the rule sets its solref at
+    // every step from the state the step starts from
+    MjcfOptions options = base_options();
     for (std::size_t k = 0; k < np; ++k) {
-      if (!layout_.pairs[k].present) {
-        options.pairs.push_back(pair_params(k, false));
-        pairs.push_back(not_simulated(k));
-        continue;
-      }
-      const LawMapping lm = map_contact_law(case_.contacts[k].law, calibration(k, touch[k]));
       PairParams p = pair_params(k, false);
-      p.solref = lm.solref;
+      p.solref = {0.0, 0.0};  // direct form, no spring: set by the rule once pressed
       options.pairs.push_back(p);
-      pairs.push_back(lm.json);
-      note_resolution(k, lm.force_duration_s, pairs.back());
     }
     model_ = load_mjcf(write_mjcf(case_, options));
     layout_ = model_layout(model_.get(), case_);
-    const double d = settings_.solimp[1];
-    lost.push_back(fmt::format(
-        "MuJoCo's soft contact with impedance d = {}: the constraint acceleration is "
-        "(1 - d) a0 - b v - k r (a0: acceleration without the contact), so inside a contact "
-        "the share d of gravity is removed from the contact's own dynamics: a resting contact "
-        "carries m g at a penetration (1 - d) m g / k (~0) instead of m g / k, and an impact "
-        "runs as the spring-damper without gravity (the clamp releases at k delta + c "
-        "delta_dot = -d m_eff a0.n instead of 0)",
-        d));
+    for (std::size_t k = 0; k < np; ++k) {
+      if (!layout_.pairs[k].present) {
+        pairs.push_back(not_simulated(k));
+        continue;
+      }
+      pairs.push_back(native_pair_json(k));
+    }
+    add_soft_contact_notes(lost);
     lost.push_back(
-        "the reported force is MuJoCo's constraint force: m_eff (k delta + c delta_dot) plus "
-        "the share d of the normal load of gravity");
-    lost.push_back(
-        "solref is per unit effective mass at one configuration (the first touch); where the "
-        "effective mass changes with pose or contact point the physical stiffness changes "
-        "with it");
+        "solref is one per pair and acceleration-based: MuJoCo solves the pair's rows together, "
+        "so with several contacts the force is split as MuJoCo's solver splits it (a uniform "
+        "penetration accelerates every contact point alike: for a face whose middle is not below "
+        "the centre of mass the resultant lies under the centre of mass, not at the face's "
+        "middle); with RK4 the solref of the step's start holds for its stages, and a contact "
+        "appearing in a later stage keeps the pair's previous solref");
   }
   for (std::size_t k = 0; k < np; ++k) {
     const ContactPair& cp = case_.contacts[k];
@@ -302,6 +382,7 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
   noted_first_s_.fill(0.0);
   scratch_.emplace(model_.get());
   if (inject_) injector_ = std::make_unique<ForceInjector>(case_, model_.get(), layout_);
+  if (!inject_ && !oracle_) rule_ = std::make_unique<SolrefRule>(case_, model_.get(), layout_);
   obs_.clear();
   last_point_m_.assign(np, Vec2::Zero());
   last_normal_.assign(np, Vec2::Zero());
@@ -317,6 +398,7 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
   }
   forward_current_ = false;
   sampled_ = false;
+  probe_steps_ = integrations_on_this_thread() - steps_at_start;
 
   mapping_ = {
       {"engine", "mujoco"},
@@ -326,10 +408,13 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
        "case (x, y) -> MuJoCo (x, z); gravity along -z; the case angle theta (ccw) is the "
        "hinge coordinate -theta about +y (a positive turn about +y is clockwise in the x-z "
        "view)"},
-      {"stepping", fmt::format("{} at dt = {} s; mj_step split into mj_forward and "
-                               "mj_Euler/mj_RungeKutta (bit-identical) to sample each step's "
-                               "start state",
-                               settings_.integrator, settings_.dt_s)},
+      {"stepping",
+       fmt::format("{} at dt = {} s; mj_step split into mj_forward and "
+                   "mj_Euler/mj_RungeKutta (bit-identical) to sample each step's start state{}",
+                   settings_.integrator, settings_.dt_s,
+                   rule_ ? "; native mode runs mj_forward's stages one by one with the solref "
+                           "rule between mj_collision and mj_makeConstraint"
+                         : "")},
       {"bodies", describe_bodies()},
       {"pairs", pairs},
       {"not_expressed", lost},
@@ -378,7 +463,11 @@ void MujocoEngine::ensure_current() {
   mjModel* m = model_.get();
   mjData* d = data_.get();
   if (!forward_current_) {
-    forward_checked(m, d);
+    if (rule_) {
+      forward_checked(m, d, &SolrefRule::hook, rule_.get());
+    } else {
+      forward_checked(m, d);
+    }
     check_warnings();
     forward_current_ = true;
   }
@@ -491,6 +580,13 @@ void MujocoEngine::body_states(std::vector<BodyState>& out) const {
 
 nlohmann::json MujocoEngine::mapping() const {
   nlohmann::json m = mapping_;
+  if (rule_ && m.is_object()) {
+    m["solref_rule_seen"] = {
+        {"what", "over this run: the most pressed contacts of one pair in one step, and the "
+                 "largest spread factor sigma = delta / delta_w the rule applied"},
+        {"most_rows", rule_->most_rows()},
+        {"largest_sigma", rule_->largest_scale()}};
+  }
   for (std::size_t k = 0; k < depth_.size() && m.contains("pairs"); ++k) {
     if (!check_depth_[k]) continue;
     m["pairs"][k]["mpr_depth_check"] = {
@@ -502,6 +598,37 @@ nlohmann::json MujocoEngine::mapping() const {
         {"max_exact_penetration_m", depth_[k].max_penetration_m}};
   }
   return m;
+}
+
+Physics MujocoEngine::physics() const {
+  Physics p;
+  p.mode = settings_.mode;
+  p.collision_by = "engine";
+  p.collision =
+      "MuJoCo's own colliders (mj_collision: plane, sphere, ellipsoid and convex mesh geoms, "
+      "libccd MPR where no exact collider exists)";
+  if (settings_.mode == "inject") {
+    p.contact_force_by = "adapter (case law)";
+    p.contact_force =
+        "the case's law evaluated by the adapter at MuJoCo's contact geometry and applied "
+        "through mjcb_passive; MuJoCo's contacts kept inactive";
+    p.parameters = "the case's law as stated";
+  } else if (settings_.mode == "oracle") {
+    p.contact_force_by = "engine";
+    p.contact_force = "MuJoCo's soft contact constraints (its constraint solver)";
+    p.parameters =
+        "one direct solref per pair calibrated at the pair's first touch in a contact-free "
+        "probe run of the case (its effective mass and approach speed)";
+    p.foreknowledge = true;
+  } else {
+    p.contact_force_by = "engine";
+    p.contact_force = "MuJoCo's soft contact constraints (its constraint solver)";
+    p.parameters =
+        "each pair's direct solref set at every step from the case's law at the current "
+        "penetration and the effective mass of the current configuration (MuJoCo's J M^-1 J^T "
+        "over the pair's contacts)";
+  }
+  return p;
 }
 
 nlohmann::json MujocoEngine::extra_attributes() const {

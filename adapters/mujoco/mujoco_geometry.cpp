@@ -4,6 +4,8 @@
 #include <utility>
 #include <variant>
 
+#include "planarbench/convex_pieces.hpp"
+
 namespace pb::internal::mujoco {
 
 GeomType geom_type(const Shape& shape) {
@@ -31,17 +33,30 @@ std::array<double, 3> ellipsoid_size_m(const Ellipse& e) {
   return {e.semi_axis_a_m, std::min(e.semi_axis_a_m, e.semi_axis_b_m), e.semi_axis_b_m};
 }
 
-std::vector<std::array<double, 3>> bipyramid_vertices(const Polygon& p) {
+std::vector<std::array<double, 3>> bipyramid_vertices(const Polygon& p, const Vec2& apex) {
   std::vector<std::array<double, 3>> v;
   double r_max = 0.0;
   for (const Vec2& q : p.points_m) {
     v.push_back({q.x(), 0.0, q.y()});
-    r_max = std::max(r_max, q.norm());
+    r_max = std::max(r_max, (q - apex).norm());
   }
   const double w = 0.5 * r_max;
-  v.push_back({0.0, w, 0.0});
-  v.push_back({0.0, -w, 0.0});
+  v.push_back({apex.x(), w, apex.y()});
+  v.push_back({apex.x(), -w, apex.y()});
   return v;
+}
+
+PolygonPieces polygon_pieces(const Polygon& p) {
+  PolygonPieces out;
+  if (is_convex(p)) {
+    out.pieces.push_back(p);
+    return out;
+  }
+  const ConvexDecomposition d = convex_pieces(p.points_m, 0);
+  for (const ConvexPiece& piece : d.pieces) out.pieces.push_back(Polygon{piece});
+  out.decomposed = true;
+  out.method = d.method;
+  return out;
 }
 
 bool is_convex(const Polygon& p) {

@@ -30,13 +30,26 @@ enum class GeomType { sphere, ellipsoid, mesh, plane };
 [[nodiscard]] std::array<double, 3> ellipsoid_size_m(const Ellipse& e);
 
 // mesh vertices (MuJoCo local frame, m) of a convex polygon: the polygon's
-// points (x, 0, y) then the apexes (0, +w, 0) and (0, -w, 0), w = half the
-// largest distance of a point from the origin (any w > 0 would do)
-[[nodiscard]] std::vector<std::array<double, 3>> bipyramid_vertices(const Polygon& p);
+// points (x, 0, y) then the apexes (a_x, +w, a_y) and (a_x, -w, a_y) over
+// `apex` (a point inside the polygon: the body origin for a whole convex
+// body, a piece's centroid for a piece), w = half the largest distance of a
+// point from the apex (any w > 0 would do)
+[[nodiscard]] std::vector<std::array<double, 3>> bipyramid_vertices(const Polygon& p,
+                                                                    const Vec2& apex = Vec2::Zero());
+
+// The convex polygons MuJoCo gets for a case polygon: itself when convex,
+// else the pieces of its convex decomposition (planarbench/convex_pieces.hpp,
+// CGAL), each a mesh geom of its own on the same body. `method` says how.
+struct PolygonPieces {
+  std::vector<Polygon> pieces;
+  bool decomposed = false;
+  std::string method;
+};
+[[nodiscard]] PolygonPieces polygon_pieces(const Polygon& p);
 
 // true when every turn of the counter-clockwise polygon is a left turn (or
-// straight): MuJoCo collides a mesh as its convex hull, so only convex
-// polygons are expressed exactly
+// straight): MuJoCo collides a mesh as its convex hull, so a non-convex
+// polygon is cut into convex pieces (polygon_pieces)
 [[nodiscard]] bool is_convex(const Polygon& p);
 
 // The collider MuJoCo 2.2.2 uses for a pair of geom types.

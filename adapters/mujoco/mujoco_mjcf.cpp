@@ -7,6 +7,7 @@
 
 #include "mujoco_frame.hpp"
 #include "mujoco_geometry.hpp"
+#include "planarbench/outline.hpp"
 #include "planarbench/errors.hpp"
 
 namespace pb::internal::mujoco {
@@ -31,39 +32,65 @@ Vec2 rotated(const Vec2& v, double theta) {
   return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
 }
 
-// the geom of body i, placed at `pos` with orientation `q` in its parent
-std::string geom_element(const Body& b, int i, const std::array<double, 3>& pos,
-                         const std::array<double, 4>& q) {
+// the number of geoms of a body: one per convex piece of a polygon, else one
+int piece_count(const Body& b) {
+  if (const auto* p = std::get_if<Polygon>(&b.shape)) {
+    return static_cast<int>(polygon_pieces(*p).pieces.size());
+  }
+  return 1;
+}
+
+// the geoms of body i (one per piece), placed at `pos` with orientation `q`
+// in its parent
+std::string geom_elements(const Body& b, int i, const std::array<double, 3>& pos,
+                          const std::array<double, 4>& q) {
   // collisions only through explicit <pair>s: contype = conaffinity = 0
-  const std::string common =
-      fmt::format(R"(name="{}" pos="{}" quat="{}" contype="0" conaffinity="0" condim="1")",
-                  geom_name(i), vec3(pos), quat(q));
+  auto common = [&](int piece) {
+    return fmt::format(R"(name="{}" pos="{}" quat="{}" contype="0" conaffinity="0" condim="1")",
+                       geom_name(i, piece), vec3(pos), quat(q));
+  };
   return std::visit(
       [&](const auto& s) -> std::string {
         using T = std::decay_t<decltype(s)>;
         if constexpr (std::is_same_v<T, Circle>) {
-          return fmt::format(R"(<geom {} type="sphere" size="{}"/>)", common, num(s.radius_m));
+          return fmt::format(R"(<geom {} type="sphere" size="{}"/>)", common(0), num(s.radius_m));
         } else if constexpr (std::is_same_v<T, Ellipse>) {
-          return fmt::format(R"(<geom {} type="ellipsoid" size="{}"/>)", common,
+          return fmt::format(R"(<geom {} type="ellipsoid" size="{}"/>)", common(0),
                              vec3(ellipsoid_size_m(s)));
         } else if constexpr (std::is_same_v<T, Polygon>) {
-          return fmt::format(R"(<geom {} type="mesh" mesh="mesh{}"/>)", common, i);
+          std::string out;
+          const int n = static_cast<int>(polygon_pieces(s).pieces.size());
+          for (int k = 0; k < n; ++k) {
+            out += fmt::format(R"(<geom {} type="mesh" mesh="{}"/>)", common(k), mesh_name(i, k));
+          }
+          return out;
         } else {
           // size only affects rendering: MuJoCo planes are infinite for collision
-          return fmt::format(R"(<geom {} type="plane" size="{} 1 1"/>)", common,
+          return fmt::format(R"(<geom {} type="plane" size="{} 1 1"/>)", common(0),
                              num(0.5 * s.extent_m));
         }
       },
       b.shape);
 }
 
-std::string mesh_asset(const Polygon& p, int i) {
-  std::string v;
-  for (const auto& x : bipyramid_vertices(p)) {
-    if (!v.empty()) v.append("  ");
-    v.append(vec3(x));
+// one mesh asset per convex piece: a bipyramid over the body origin for a
+// whole convex polygon, over the piece's centroid for a piece (the apexes
+// must lie over the piece for its section y = 0 to be the piece)
+std::string mesh_assets(const Polygon& p, int i) {
+  const PolygonPieces pp = polygon_pieces(p);
+  std::string out;
+  for (std::size_t k = 0; k < pp.pieces.size(); ++k) {
+    const Vec2 apex =
+        pp.decomposed ? polygon_area_properties(pp.pieces[k].points_m).centroid_m : Vec2::Zero();
+    std::string v;
+    for (const auto& x : bipyramid_vertices(pp.pieces[k], apex)) {
+      if (!v.empty()) v.append("  ");
+      v.append(vec3(x));
+    }
+    out += fmt::format(R"(<mesh name="{}" vertex="{}"/>)", mesh_name(i, static_cast<int>(k)), v);
+    out += "\n";
   }
-  return fmt::format(R"(<mesh name="mesh{}" vertex="{}"/>)", i, v);
+  return out;
 }
 
 // explicit mass and planar inertia: the inertia about y is the case's; the two
@@ -87,7 +114,7 @@ std::string moving_body(const Case& c, int i) {
     s += fmt::format(R"(<joint name="{}" type="slide" axis="0 0 1"/>)", slide_z_name(i));
     s += fmt::format(R"(<joint name="{}" type="hinge" axis="0 1 0"/>)", hinge_name(i));
     s += inertial_element(b, {0.0, 0.0, 0.0});
-    s += geom_element(b, i, {0.0, 0.0, 0.0}, identity);
+    s += geom_elements(b, i, {0.0, 0.0, 0.0}, identity);
   } else {
     // pendulum: frame origin at the pivot; centre of mass at -pivot_in_body
     // in the reference pose (angle 0)
@@ -96,7 +123,7 @@ std::string moving_body(const Case& c, int i) {
     s += fmt::format(R"(<body name="{}" pos="{}">)", body_name(i), vec3(to_mj(rj.anchor_world_m)));
     s += fmt::format(R"(<joint name="{}" type="hinge" axis="0 1 0"/>)", hinge_name(i));
     s += inertial_element(b, com);
-    s += geom_element(b, i, com, identity);
+    s += geom_elements(b, i, com, identity);
   }
   s += "</body>\n";
   return s;
@@ -116,8 +143,18 @@ std::string reals(const double* v, std::size_t n) {
 std::string body_name(int i) {
   return fmt::format("body{}", i);
 }
-std::string geom_name(int i) {
-  return fmt::format("geom{}", i);
+std::string geom_name(int i, int piece) {
+  return piece == 0 ? fmt::format("geom{}", i) : fmt::format("geom{}_{}", i, piece);
+}
+std::string mesh_name(int i, int piece) {
+  return piece == 0 ? fmt::format("mesh{}", i) : fmt::format("mesh{}_{}", i, piece);
+}
+std::string pair_name(int k, int piece_a, int piece_b) {
+  return piece_a == 0 && piece_b == 0 ? fmt::format("pair{}", k)
+                                      : fmt::format("pair{}_{}_{}", k, piece_a, piece_b);
+}
+int geom_count(const Body& b) {
+  return piece_count(b);
 }
 std::string slide_x_name(int i) {
   return fmt::format("body{}_x", i);
@@ -150,10 +187,10 @@ std::string write_mjcf(const Case& c, const MjcfOptions& o) {
   for (std::size_t i = 0; i < c.bodies.size(); ++i) {
     const Body& b = c.bodies[i];
     const int id = static_cast<int>(i);
-    if (const auto* p = std::get_if<Polygon>(&b.shape)) assets += mesh_asset(*p, id) + "\n";
+    if (const auto* p = std::get_if<Polygon>(&b.shape)) assets += mesh_assets(*p, id);
     if (b.fixed) {
       // fixed bodies are geoms of the world body at their pose
-      world += geom_element(b, id, to_mj(b.position_m), quat_from_ccw(b.angle_rad)) + "\n";
+      world += geom_elements(b, id, to_mj(b.position_m), quat_from_ccw(b.angle_rad)) + "\n";
     } else {
       if (std::holds_alternative<HalfPlane>(b.shape)) {
         throw EngineError(fmt::format("mujoco: half-plane '{}' must be fixed", b.name));
@@ -169,11 +206,19 @@ std::string write_mjcf(const Case& c, const MjcfOptions& o) {
     // two fixed bodies never move: MuJoCo has nothing to compute
     if (a.fixed && b.fixed) continue;
     const PairParams& p = o.pairs[k];
-    pairs += fmt::format(
-        R"(<pair name="pair{}" geom1="{}" geom2="{}" condim="1" solref="{}" solimp="{}" margin="{}" gap="{}"/>)",
-        k, geom_name(cp.body_a), geom_name(cp.body_b), reals(p.solref.data(), 2),
-        reals(p.solimp.data(), 5), num(p.margin_m), num(p.gap_m));
-    pairs += "\n";
+    // every piece of a against every piece of b, with the case pair's parameters
+    const int na = piece_count(a);
+    const int nb = piece_count(b);
+    for (int pa = 0; pa < na; ++pa) {
+      for (int pb = 0; pb < nb; ++pb) {
+        pairs += fmt::format(
+            R"(<pair name="{}" geom1="{}" geom2="{}" condim="1" solref="{}" solimp="{}" margin="{}" gap="{}"/>)",
+            pair_name(static_cast<int>(k), pa, pb), geom_name(cp.body_a, pa),
+            geom_name(cp.body_b, pb), reals(p.solref.data(), 2), reals(p.solimp.data(), 5),
+            num(p.margin_m), num(p.gap_m));
+        pairs += "\n";
+      }
+    }
   }
   const auto g = to_mj(c.gravity_mps2);
   return fmt::format(

@@ -1,6 +1,7 @@
 // MJCF text of a case: one MuJoCo body per moving case body, one geom per
-// body, one explicit <pair> per case contact pair, everything else unable to
-// collide. Built from the pb::Case alone: no code path per case.
+// body (one per convex piece of a non-convex polygon), one explicit <pair>
+// per case contact pair (per two pieces), everything else unable to collide.
+// Built from the pb::Case alone: no code path per case.
 #pragma once
 
 #include <array>
@@ -28,9 +29,15 @@ struct MjcfOptions {
   std::vector<PairParams> pairs;  // index = Case::contacts index
 };
 
-// names of the MuJoCo elements of case body i and pair k
+// names of the MuJoCo elements of case body i and pair k; a polygon cut into
+// convex pieces has one geom (and mesh) per piece, and a case pair one
+// MuJoCo <pair> per two pieces (piece 0 keeps the plain names)
 [[nodiscard]] std::string body_name(int i);
-[[nodiscard]] std::string geom_name(int i);
+[[nodiscard]] std::string geom_name(int i, int piece = 0);
+[[nodiscard]] std::string mesh_name(int i, int piece = 0);
+[[nodiscard]] std::string pair_name(int k, int piece_a = 0, int piece_b = 0);
+// geoms of a case body: its convex pieces (polygon_pieces), else 1
+[[nodiscard]] int geom_count(const Body& b);
 [[nodiscard]] std::string slide_x_name(int i);
 [[nodiscard]] std::string slide_z_name(int i);
 [[nodiscard]] std::string hinge_name(int i);

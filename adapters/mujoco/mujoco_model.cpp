@@ -46,21 +46,35 @@ ModelPtr load_mjcf(const std::string& xml) {
 }
 
 int ModelLayout::pair_of(int geom1, int geom2) const {
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const PairLayout& p = pairs[k];
-    if ((p.geom_a == geom1 && p.geom_b == geom2) || (p.geom_a == geom2 && p.geom_b == geom1)) {
-      return static_cast<int>(k);
-    }
+  const auto g = body_of_geom.size();
+  if (geom1 < 0 || geom2 < 0 || static_cast<std::size_t>(geom1) >= g ||
+      static_cast<std::size_t>(geom2) >= g) {
+    return -1;
   }
-  return -1;
+  const int a = body_of_geom[static_cast<std::size_t>(geom1)];
+  const int b = body_of_geom[static_cast<std::size_t>(geom2)];
+  if (a < 0 || b < 0) return -1;
+  return pair_table[static_cast<std::size_t>(a) * bodies.size() + static_cast<std::size_t>(b)];
+}
+
+bool ModelLayout::on_body_a(int geom, int k) const {
+  return body_of_geom.at(static_cast<std::size_t>(geom)) ==
+         pairs.at(static_cast<std::size_t>(k)).body_a;
 }
 
 ModelLayout model_layout(const mjModel* m, const Case& c) {
   ModelLayout L;
+  L.body_of_geom.assign(static_cast<std::size_t>(m->ngeom), -1);
   for (std::size_t i = 0; i < c.bodies.size(); ++i) {
     const int id = static_cast<int>(i);
     BodyLayout b;
-    b.geom = id_of(m, mjOBJ_GEOM, geom_name(id));
+    for (int piece = 0; piece < geom_count(c.bodies[i]); ++piece) {
+      const int g = id_of(m, mjOBJ_GEOM, geom_name(id, piece));
+      if (g < 0) continue;
+      b.geoms.push_back(g);
+      L.body_of_geom[static_cast<std::size_t>(g)] = id;
+    }
+    b.geom = b.geoms.empty() ? -1 : b.geoms.front();
     if (!c.bodies[i].fixed) {
       b.mj_body = id_of(m, mjOBJ_BODY, body_name(id));
       const int jx = id_of(m, mjOBJ_JOINT, slide_x_name(id));
@@ -72,16 +86,33 @@ ModelLayout model_layout(const mjModel* m, const Case& c) {
     }
     L.bodies.push_back(b);
   }
-  for (const ContactPair& cp : c.contacts) {
+  const std::size_t n = c.bodies.size();
+  L.pair_table.assign(n * n, -1);
+  for (std::size_t k = 0; k < c.contacts.size(); ++k) {
+    const ContactPair& cp = c.contacts[k];
     PairLayout p;
     const BodyLayout& a = L.bodies.at(static_cast<std::size_t>(cp.body_a));
     const BodyLayout& b = L.bodies.at(static_cast<std::size_t>(cp.body_b));
-    p.geom_a = a.geom;
-    p.geom_b = b.geom;
+    p.body_a = cp.body_a;
+    p.body_b = cp.body_b;
     p.mj_body_a = a.mj_body;
     p.mj_body_b = b.mj_body;
     p.present = !(c.bodies[static_cast<std::size_t>(cp.body_a)].fixed &&
                   c.bodies[static_cast<std::size_t>(cp.body_b)].fixed);
+    if (p.present) {
+      for (std::size_t pa = 0; pa < a.geoms.size(); ++pa) {
+        for (std::size_t pb = 0; pb < b.geoms.size(); ++pb) {
+          const int id = id_of(m, mjOBJ_PAIR,
+                               pair_name(static_cast<int>(k), static_cast<int>(pa),
+                                         static_cast<int>(pb)));
+          if (id >= 0) p.mj_pairs.push_back(id);
+        }
+      }
+    }
+    L.pair_table[static_cast<std::size_t>(cp.body_a) * n + static_cast<std::size_t>(cp.body_b)] =
+        static_cast<int>(k);
+    L.pair_table[static_cast<std::size_t>(cp.body_b) * n + static_cast<std::size_t>(cp.body_a)] =
+        static_cast<int>(k);
     L.pairs.push_back(p);
   }
   return L;

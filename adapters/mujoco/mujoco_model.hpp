@@ -31,7 +31,8 @@ using DataPtr = std::unique_ptr<mjData, DataDeleter>;
 // MuJoCo ids of one case body; -1 where absent
 struct BodyLayout {
   int mj_body = 0;  // 0 = the world body (fixed case bodies)
-  int geom = -1;
+  int geom = -1;    // the first geom (a body cut into convex pieces has more)
+  std::vector<int> geoms;  // every geom of the body, one per convex piece
   int qpos_x = -1;      // slide x (free bodies)
   int qpos_z = -1;      // slide z (free bodies)
   int qpos_hinge = -1;  // hinge about y (every moving body)
@@ -42,18 +43,23 @@ struct BodyLayout {
 
 // MuJoCo ids of one case contact pair
 struct PairLayout {
-  int geom_a = -1;  // geom of Case::contacts[k].body_a
-  int geom_b = -1;
+  int body_a = -1;  // Case::contacts[k].body_a
+  int body_b = -1;
   int mj_body_a = 0;
   int mj_body_b = 0;
   bool present = false;  // false when both bodies are fixed (no <pair> written)
+  std::vector<int> mj_pairs;  // the MuJoCo <pair>s of the case pair (one per two pieces)
 };
 
 struct ModelLayout {
   std::vector<BodyLayout> bodies;  // index = Case::bodies index
   std::vector<PairLayout> pairs;   // index = Case::contacts index
+  std::vector<int> body_of_geom;   // MuJoCo geom id -> Case::bodies index (-1: none)
+  std::vector<int> pair_table;     // bodies x bodies -> Case::contacts index (-1: none)
   // the pair of a MuJoCo contact (geom1, geom2 in either order), -1 if none
   [[nodiscard]] int pair_of(int geom1, int geom2) const;
+  // whether MuJoCo geom `geom` belongs to body_a of case pair k
+  [[nodiscard]] bool on_body_a(int geom, int k) const;
 };
 
 // Looks the names written by write_mjcf up in the compiled model.

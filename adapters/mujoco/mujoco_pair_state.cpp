@@ -1,5 +1,6 @@
 #include "mujoco_pair_state.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "mujoco_frame.hpp"
@@ -37,8 +38,8 @@ double approach_speed_mps(const mjModel* m, const mjData* d, int body_a, int bod
   return (va[0] - vb[0]) * n[0] + (va[1] - vb[1]) * n[1] + (va[2] - vb[2]) * n[2];
 }
 
-double effective_mass_kg(const mjModel* m, mjData* d, int body_a, int body_b, const double p[3],
-                         const double n[3], Scratch& s) {
+void normal_row(const mjModel* m, mjData* d, int body_a, int body_b, const double p[3],
+                const double n[3], Scratch& s, double* row) {
   const int nv = m->nv;
   std::fill(s.jac_a.begin(), s.jac_a.end(), 0.0);
   std::fill(s.jac_b.begin(), s.jac_b.end(), 0.0);
@@ -50,8 +51,14 @@ double effective_mass_kg(const mjModel* m, mjData* d, int body_a, int body_b, co
       const std::size_t at = i * static_cast<std::size_t>(nv) + static_cast<std::size_t>(k);
       r += n[i] * (s.jac_b[at] - s.jac_a[at]);
     }
-    s.row[static_cast<std::size_t>(k)] = r;
+    row[k] = r;
   }
+}
+
+double effective_mass_kg(const mjModel* m, mjData* d, int body_a, int body_b, const double p[3],
+                         const double n[3], Scratch& s) {
+  const int nv = m->nv;
+  normal_row(m, d, body_a, body_b, p, n, s, s.row.data());
   mj_solveM(m, d, s.minv_row.data(), s.row.data(), 1);
   double w = 0.0;  // inverse effective mass, 1/kg
   for (int k = 0; k < nv; ++k) {
@@ -69,6 +76,7 @@ void observe_pairs(const mjModel* m, const mjData* d, const ModelLayout& layout,
     if (k < 0) continue;
     PairObservation& o = out[static_cast<std::size_t>(k)];
     ++o.contacts;
+    if (con.dist < 0.0) ++o.pressed;
     if (with_force && con.efc_address >= 0) {
       mjtNum f[6];
       mj_contactForce(m, d, i, f);
@@ -86,14 +94,28 @@ void observe_pairs(const mjModel* m, const mjData* d, const ModelLayout& layout,
     const mjContact& con = d->contact[o.deepest];
     // frame[0..2] is the normal from geom1 to geom2; the case wants a -> b.
     // The out-of-plane component (MPR noise, ~1e-8) is dropped.
-    const double sign = con.geom1 == p.geom_a ? 1.0 : -1.0;
+    const double sign = layout.on_body_a(con.geom1, static_cast<int>(k)) ? 1.0 : -1.0;
     Vec2 n = sign * from_mj(con.frame);
     n.normalize();
     o.normal_ab = n;
     o.point_m = from_mj(con.pos);
+    if (o.pressed > 1) {
+      // SPEC §1, one force per pair: several contacts pressed in act at their
+      // depth-weighted centroid
+      double w = 0.0;              // m
+      Vec2 moment = Vec2::Zero();  // m^2
+      for (int i = 0; i < d->ncon; ++i) {
+        const mjContact& c = d->contact[i];
+        if (c.dist >= 0.0 || layout.pair_of(c.geom1, c.geom2) != static_cast<int>(k)) continue;
+        w -= c.dist;
+        moment -= c.dist * from_mj(c.pos);
+      }
+      if (w > 0.0) o.point_m = moment / w;
+    }
     const auto n3 = to_mj(n);
+    const auto p3 = to_mj(o.point_m);
     o.approach_speed_mps =
-        approach_speed_mps(m, d, p.mj_body_a, p.mj_body_b, con.pos, n3.data(), scratch);
+        approach_speed_mps(m, d, p.mj_body_a, p.mj_body_b, p3.data(), n3.data(), scratch);
   }
 }
 

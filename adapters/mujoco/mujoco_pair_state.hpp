@@ -25,11 +25,14 @@ struct PairObservation {
   bool reported = false;            // MuJoCo's collider gave at least one contact
   int deepest = -1;                 // index of the deepest contact in mjData::contact
   double penetration_m = 0.0;       // m, -dist of the deepest contact (< 0: apart, within margin)
-  Vec2 normal_ab = Vec2::Zero();    // unit, case frame, from body_a to body_b
-  Vec2 point_m = Vec2::Zero();      // m, case frame, MuJoCo's contact position (midpoint)
+  Vec2 normal_ab = Vec2::Zero();    // unit, case frame, from body_a to body_b (deepest contact)
+  // m, case frame: MuJoCo's contact position (the midpoint between the
+  // geoms); with several contacts pressed in, their depth-weighted centroid
+  Vec2 point_m = Vec2::Zero();
   double approach_speed_mps = 0.0;  // m/s, (v_a - v_b) . n_ab at the point, > 0 approaching
   double force_n = 0.0;  // N, MuJoCo's normal force summed over the pair's active contacts
   int contacts = 0;      // contacts MuJoCo reported for the pair
+  int pressed = 0;       // of them, with dist < 0 (in the constraint)
 };
 
 // Reads d->contact (valid after mj_collision at the current qpos) and d->qvel.
@@ -47,5 +50,10 @@ void observe_pairs(const mjModel* m, const mjData* d, const ModelLayout& layout,
 // what a direct solref is per unit of); needs qLD (mj_factorM, position stage)
 [[nodiscard]] double effective_mass_kg(const mjModel* m, mjData* d, int mj_body_a, int mj_body_b,
                                        const double p[3], const double n[3], Scratch& scratch);
+
+// n^T (J_b(p) - J_a(p)), the row of one contact along its normal n (MuJoCo
+// frame), into `row` (nv entries)
+void normal_row(const mjModel* m, mjData* d, int mj_body_a, int mj_body_b, const double p[3],
+                const double n[3], Scratch& scratch, double* row);
 
 }  // namespace pb::internal::mujoco

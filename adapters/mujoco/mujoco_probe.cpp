@@ -11,7 +11,9 @@
 namespace pb::internal::mujoco {
 
 std::vector<FirstTouch> probe_first_touch(const mjModel* m, const Case& c,
-                                          const ModelLayout& layout, double until_s) {
+                                          const ModelLayout& layout, double until_s,
+                                          long& steps_taken) {
+  steps_taken = 0;
   DataPtr data(mj_makeData(m));
   mjData* d = data.get();
   set_initial_state(m, d, c, layout);
@@ -51,7 +53,9 @@ std::vector<FirstTouch> probe_first_touch(const mjModel* m, const Case& c,
           effective_mass_kg(m, d, pl.mj_body_a, pl.mj_body_b, p3.data(), n3.data(), scratch);
       --pending;
     }
+    if (pending == 0) break;  // every pair found: no step beyond the last touch
     integrate(m, d);
+    ++steps_taken;
   }
   return touch;
 }

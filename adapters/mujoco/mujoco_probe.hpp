@@ -26,7 +26,9 @@ struct FirstTouch {
 // Runs `m` (a model whose pairs are all inactive) from the case's initial
 // state with MuJoCo's own stepping until every present pair has touched or
 // until `until_s`. Throws EngineError when MuJoCo raises a warning.
+// steps_taken: the steps the probe integrated.
 [[nodiscard]] std::vector<FirstTouch> probe_first_touch(const mjModel* m, const Case& c,
-                                                        const ModelLayout& layout, double until_s);
+                                                        const ModelLayout& layout, double until_s,
+                                                        long& steps_taken);
 
 }  // namespace pb::internal::mujoco

@@ -26,9 +26,11 @@ SettingsBinder bind_mujoco_settings(MujocoSettings& s) {
       .real("detection_margin", &s.detection_margin_m, 0.0, 1.0,
             "m, margin of exact-collider pairs, reported as inactive contacts for onset "
             "interpolation; changes no force (default 0.01; MPR pairs always use 0)")
-      .choice("mode", &s.mode, {"native", "inject"},
-              "native = MuJoCo soft contact with the law mapped to solref (default), inject = "
-              "contacts inactive and the case's force law applied at MuJoCo's contact geometry");
+      .choice("mode", &s.mode, {"native", "oracle", "inject"},
+              "native = MuJoCo's collision and soft contact, solref set each step from the law "
+              "and the current effective mass (default); oracle = solref calibrated once on a "
+              "probe run of the case (foreknowledge); inject = contacts inactive and the case's "
+              "force law applied at MuJoCo's contact geometry");
   return b;
 }
 

@@ -31,9 +31,13 @@ struct MujocoSettings {
   // always get margin 0: a margin spoils MPR's depth (measured: 0.4 mm error
   // at 0.01 m margin against 1e-6 m at 0).
   double detection_margin_m = 0.01;
-  // "native": MuJoCo's own soft contact with the case's law mapped onto
-  // solref; "inject": MuJoCo's contacts kept inactive, the case's own law
-  // applied as a force at MuJoCo's contact geometry (mjcb_passive)
+  // "native" (default): MuJoCo's own collision and soft contact, each pair's
+  // solref set at every step from the case's law and the effective mass of
+  // the current configuration (mujoco_solref_rule.hpp); "oracle": solref set
+  // once, calibrated at each pair's first touch in a contact-free probe run
+  // (foreknowledge, opt-in); "inject": MuJoCo's contacts kept inactive, the
+  // case's own law applied as a force at MuJoCo's contact geometry
+  // (mjcb_passive)
   std::string mode = "native";
 };
 

@@ -7,6 +7,7 @@ namespace pb::internal::mujoco {
 namespace {
 
 thread_local std::string t_last_warning;
+thread_local long t_integrations = 0;
 
 void record_warning(const char* text) {
   t_last_warning = text ? text : "";
@@ -60,10 +61,28 @@ const std::string& last_warning_text() {
   return t_last_warning;
 }
 
-void forward_checked(const mjModel* m, mjData* d) {
+void forward_checked(const mjModel* m, mjData* d, CollisionHook hook, void* context) {
   mj_checkPos(m, d);
   mj_checkVel(m, d);
-  mj_forward(m, d);
+  if (hook == nullptr) {
+    mj_forward(m, d);
+  } else {
+    mj_kinematics(m, d);
+    mj_comPos(m, d);
+    mj_camlight(m, d);
+    mj_tendon(m, d);
+    mj_crb(m, d);
+    mj_factorM(m, d);
+    mj_collision(m, d);
+    hook(context, m, d);
+    mj_makeConstraint(m, d);
+    mj_transmission(m, d);
+    mj_projectConstraint(m, d);
+    mj_fwdVelocity(m, d);
+    mj_fwdActuation(m, d);
+    mj_fwdAcceleration(m, d);
+    mj_fwdConstraint(m, d);
+  }
   mj_checkAcc(m, d);
 }
 
@@ -73,7 +92,10 @@ void integrate(const mjModel* m, mjData* d) {
   } else {
     mj_Euler(m, d);
   }
+  ++t_integrations;
 }
+
+long integrations_on_this_thread() { return t_integrations; }
 
 const WarningInfo& warning_info(int warning) {
   static const WarningInfo unknown{"mjWARN_?", "a warning this adapter does not know", true,

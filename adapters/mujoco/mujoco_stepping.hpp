@@ -15,10 +15,25 @@
 
 namespace pb::internal::mujoco {
 
-// first half: checks and mj_forward at the current state
-void forward_checked(const mjModel* m, mjData* d);
+// A function run inside the forward pass between mj_collision (the contacts
+// of the current state are in d->contact) and mj_makeConstraint (their
+// solref is read into the constraint rows): native mode's SolrefRule.
+using CollisionHook = void (*)(void* context, const mjModel* m, mjData* d);
+
+// first half: checks and mj_forward at the current state. With a hook,
+// mj_forward's stages are called one by one (engine_forward.c 2.2.2:
+// mj_fwdPosition = kinematics, comPos, camlight, tendon, crb, factorM,
+// collision, makeConstraint, transmission, projectConstraint; then
+// fwdVelocity, fwdActuation, fwdAcceleration, fwdConstraint; the model has no
+// sensors, energy or control callback) with the hook after mj_collision.
+void forward_checked(const mjModel* m, mjData* d, CollisionHook hook = nullptr,
+                     void* context = nullptr);
 // second half: the integrator of m->opt (RK4 reuses the qacc of forward_checked)
 void integrate(const mjModel* m, mjData* d);
+// every integrate() of this thread, whoever calls it (a run, the oracle's
+// probe): a trace the engine reads before and after build to prove that its
+// default mode steps nothing ahead of t = 0 (SPEC §5b)
+[[nodiscard]] long integrations_on_this_thread();
 
 // What one of MuJoCo's warnings (mjtWarning, mjdata.h) means for a run.
 struct WarningInfo {

@@ -18,12 +18,6 @@ std::string unsupported_reason(const Case& c) {
     if (!b.fixed && std::holds_alternative<HalfPlane>(b.shape)) {
       return fmt::format("body '{}': a moving half-plane (MuJoCo planes must be static)", b.name);
     }
-    if (const auto* p = std::get_if<Polygon>(&b.shape); p && !is_convex(*p)) {
-      return fmt::format(
-          "body '{}': a non-convex polygon (MuJoCo collides a mesh as its convex hull; a "
-          "decomposition into convex pieces would add one contact spring per piece)",
-          b.name);
-    }
     if (!b.fixed && !(b.mass_kg > 0.0 && b.inertia_kgm2 > 0.0)) {
       return fmt::format("body '{}': a moving body needs mass > 0 and inertia > 0", b.name);
     }
@@ -53,7 +47,8 @@ std::string unsupported_reason(const Case& c) {
 
 }  // namespace
 
-Capability mujoco_capability(const Case& c, bool inject) {
+Capability mujoco_capability(const Case& c, const std::string& mode) {
+  const bool inject = mode == "inject";
   if (auto r = unsupported_reason(c); !r.empty()) return {Support::unsupported, r};
   std::string reasons;
   auto add = [&](const std::string& r) {
@@ -61,6 +56,12 @@ Capability mujoco_capability(const Case& c, bool inject) {
     if (!reasons.empty()) reasons.append("; ");
     reasons.append(r);
   };
+  for (const Body& b : c.bodies) {
+    if (const auto* p = std::get_if<Polygon>(&b.shape); p && !is_convex(*p)) {
+      add(fmt::format("body '{}': a non-convex polygon as one mesh geom per convex piece (CGAL)",
+                      b.name));
+    }
+  }
   for (const ContactPair& cp : c.contacts) {
     const auto& a = c.bodies[static_cast<std::size_t>(cp.body_a)];
     const auto& b = c.bodies[static_cast<std::size_t>(cp.body_b)];
@@ -72,14 +73,19 @@ Capability mujoco_capability(const Case& c, bool inject) {
                       collider_description(ga, gb)));
     }
     if (inject) continue;
-    if (const auto* kv = std::get_if<KelvinVoigt>(&cp.law)) {
-      add("Kelvin-Voigt as a soft constraint near d = 1: gravity's share of the contact load "
-          "is scaled by 1 - d (resting penetration ~0 instead of m g / k)");
-      if (kv->damping_depth_m > 0.0) add("damping ramp replaced by a linear equivalent");
-    } else {
-      add(
-          fmt::format("{} replaced by a linear spring-damper matching one impact's duration "
-                      "and restitution",
+    add("the law as a soft constraint near d = 1: gravity's share of the contact load is "
+        "scaled by 1 - d (resting penetration ~0 instead of m g / k)");
+    const auto* kv = std::get_if<KelvinVoigt>(&cp.law);
+    if (mode == "oracle") {
+      if (kv && kv->damping_depth_m > 0.0) add("damping ramp replaced by a linear equivalent");
+      if (!kv) {
+        add(fmt::format("{} replaced by a linear spring-damper matching one impact's duration "
+                        "and restitution (calibrated on a probe run)",
+                        contact_law_name(cp.law)));
+      }
+    } else if (!kv) {
+      add(fmt::format("{} as a linear spring-damper set each step from the law at the current "
+                      "penetration",
                       contact_law_name(cp.law)));
     }
   }

@@ -9,7 +9,7 @@
 
 namespace pb::internal::mujoco {
 
-// `inject` = mujoco.mode=inject (the case's own force law is applied)
-[[nodiscard]] Capability mujoco_capability(const Case& c, bool inject);
+// `mode` = mujoco.mode: "native", "oracle" or "inject"
+[[nodiscard]] Capability mujoco_capability(const Case& c, const std::string& mode);
 
 }  // namespace pb::internal::mujoco

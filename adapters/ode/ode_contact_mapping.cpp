@@ -11,33 +11,52 @@
 
 namespace pb::internal::ode {
 
+SoftRow soft_row(double k, double c, double h, bool corrected) {
+  SoftRow r;
+  double used = c;  // c', N s/m
+  if (corrected) {
+    r.correction_valid = c >= h * k;
+    used = r.correction_valid ? c - h * k : 0.0;
+  }
+  const double denom = h * k + used;  // N s/m
+  r.erp = h * k / denom;
+  r.cfm = 1.0 / denom;
+  return r;
+}
+
 SoftContact soft_contact(double k, double c, double h, bool corrected) {
   if (!(k > 0.0) || !(c >= 0.0) || !(h > 0.0)) {
     throw std::invalid_argument("soft_contact: needs k > 0, c >= 0, h > 0");
   }
+  const SoftRow row = soft_row(k, c, h, corrected);
   SoftContact s;
   s.corrected = corrected;
   s.numerical_damping_ns_per_m = h * k;
+  s.erp = row.erp;
+  s.cfm = row.cfm;
+  s.correction_valid = row.correction_valid;
   if (!corrected) {
     s.damping_used_ns_per_m = c;
     s.note = fmt::format(
         "textbook mapping c' = c: backward Euler adds about h k = {:.6g} N s/m of damping", h * k);
-  } else if (c >= h * k) {
+  } else if (row.correction_valid) {
     s.damping_used_ns_per_m = c - h * k;
     s.note = fmt::format("corrected mapping c' = c - h k = {:.6g} - {:.6g} = {:.6g} N s/m", c,
                          h * k, c - h * k);
   } else {
     s.damping_used_ns_per_m = 0.0;
-    s.correction_valid = false;
     s.note = fmt::format(
         "corrected mapping invalid: c = {:.6g} < h k = {:.6g} N s/m; clamped at c' = 0 (ERP = 1), "
         "the contact damps like h k instead of c; use a smaller step",
         c, h * k);
   }
-  const double denom = h * k + s.damping_used_ns_per_m;  // N s/m
-  s.erp = h * k / denom;
-  s.cfm = 1.0 / denom;
   return s;
+}
+
+SpreadLaw spread_law(double k, double c, double deepest_m, double depth_m, double depth_sum_m) {
+  if (!(depth_sum_m > 0.0)) return {k, c};
+  // the shares first: one contact gets exactly 1 and the law itself
+  return {k * (deepest_m / depth_sum_m), c * (depth_m / depth_sum_m)};
 }
 
 LinearLaw linear_law(const ContactLaw& law, double m, double v) {

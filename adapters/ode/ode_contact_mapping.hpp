@@ -35,6 +35,36 @@ struct SoftContact {
 [[nodiscard]] SoftContact soft_contact(double stiffness_n_per_m, double damping_ns_per_m,
                                        double step_s, bool corrected);
 
+// The numbers of soft_contact without its note, for every contact of every
+// step (no allocation): ERP, CFM and whether the corrected mapping held.
+struct SoftRow {
+  double erp = 0.0;              // -
+  double cfm = 0.0;              // m/(N s)
+  bool correction_valid = true;  // c >= h k (always true for textbook)
+};
+[[nodiscard]] SoftRow soft_row(double stiffness_n_per_m, double damping_ns_per_m, double step_s,
+                               bool corrected);
+
+// ---- one pair's law over its contacts (native mode) -------------------------
+
+// SPEC §1, one force per pair: ODE's soft contact rows are springs and
+// dampers in force units, each on its own depth d_i and normal speed u_i
+// (lambda_i = k_i d_i - c_i u_i with the corrected mapping). Giving contact i
+//   k_i = k delta / sum_j d_j,   c_i = c d_i / sum_j d_j
+// (delta = max_j d_j, the pair's penetration) makes the springs sum to
+// k delta for any depths and the dampers to c (a mean of the u_i weighted by
+// depth); both resultants act at the depth-weighted centroid of the contacts
+// (k_i d_i and c_i are proportional to d_i). One contact: the law itself;
+// a uniform penetration: k / N and c / N each. (Spreading c like k, c delta /
+// sum d_j, would damp by delta / mean depth too much: 1.5 times for the
+// parabolic depths of a curved outline pressed into a line.)
+struct SpreadLaw {
+  double stiffness_n_per_m = 0.0;  // k_i, N/m
+  double damping_ns_per_m = 0.0;   // c_i, N s/m
+};
+[[nodiscard]] SpreadLaw spread_law(double stiffness_n_per_m, double damping_ns_per_m,
+                                   double deepest_m, double depth_m, double depth_sum_m);
+
 // ---- a law as a linear spring-damper ---------------------------------------
 
 struct LinearLaw {

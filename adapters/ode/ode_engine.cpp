@@ -1,9 +1,16 @@
 // The ODE adapter, engine "ode": builds any case from the pb::Case model
 // through ODE 0.16.2 (double precision) the way its users do: one dWorld and
 // one dSpace per engine, dSpaceCollide with a near callback, contact joints
-// in a dJointGroup emptied every step. Contact laws become soft contacts
-// (native mode) or are applied as forces (inject mode); ode_contact_mapping
-// says how, and mapping() records it.
+// in a dJointGroup emptied every step, at the step the user gives. Modes:
+//   native  (default) every contact ODE reports is a soft contact joint whose
+//           ERP/CFM is set each step from the case's law at the pair's
+//           current penetration, spread over the pair's contacts (SPEC §5b:
+//           the state at the time, no look-ahead);
+//   oracle  the law replaced by one spring-damper calibrated on a
+//           contact-free probe run (foreknowledge, opt-in), deepest contact
+//           only, optionally auto sub-stepped;
+//   inject  no contact joints: the case's law applied as a force.
+// ode_contact_mapping says how, and mapping() records it.
 #include "planarbench/adapters/ode_engine.hpp"
 
 #include <fmt/format.h>
@@ -105,7 +112,7 @@ nlohmann::json not_expressed_native(const ContactLaw& law) {
 // one contact pair's state between samples
 struct PairTrack {
   double force_n = 0.0;               // N, normal force of the current sample
-  double latched_approach_mps = 0.0;  // m/s, delta_dot at onset (inject mode, eq. 7)
+  double latched_approach_mps = 0.0;  // m/s, delta_dot at onset (eq. 7's delta_dot^-)
   bool in_contact = false;            // penetration > 0 at the current sample
   double depth_m = 0.0;               // m, at the current sample
   double speed_mps = 0.0;             // m/s, approach speed at the current sample
@@ -138,11 +145,17 @@ class OdeEngine final : public Engine {
     return tracker_.episodes();
   }
   [[nodiscard]] long steps() const override { return steps_; }
-  [[nodiscard]] nlohmann::json mapping() const override { return mapping_; }
+  [[nodiscard]] nlohmann::json mapping() const override;
   [[nodiscard]] nlohmann::json extra_attributes() const override { return extra_; }
+  [[nodiscard]] Physics physics() const override;
+  [[nodiscard]] long steps_before_start() const override { return probe_steps_; }
 
  private:
-  void map_contacts(const std::vector<FirstTouch>& touches);
+  void map_contacts_oracle(const std::vector<FirstTouch>& touches);
+  void map_contacts_native();
+  void add_common_mapping();
+  void add_native_joints(std::size_t p);
+  void add_oracle_joint(std::size_t p);
   void step_once();
   [[nodiscard]] bool injected_forces_run_away();
   void sample_contacts();
@@ -155,15 +168,24 @@ class OdeEngine final : public Engine {
   std::unique_ptr<PairCollider> collider_;
   std::vector<PairContact> now_;  // ODE's contacts at the current state
   std::vector<PairTrack> track_;
-  std::vector<SoftContact> soft_;  // native mode, per pair
-  std::vector<dJointFeedback> feedback_;
-  std::vector<char> joint_made_;   // a contact joint was made this step
+  std::vector<SoftContact> soft_;  // oracle mode, per pair
+  std::vector<dJointFeedback> feedback_;  // per contact joint: pair p owns [p * cap, (p+1) * cap)
+  std::vector<int> joints_made_;   // per pair: contact joints made this step
+  std::size_t feedback_per_pair_ = 0;
   std::vector<double> angle_rad_;  // continuous angles, per body
   std::vector<Vec2> force_n_;      // inject mode: total force per body this step, N
   std::vector<double> torque_nm_;  // inject mode: about the centre of mass, N m
   EpisodeTracker tracker_;
   bool inject_ = false;
+  bool oracle_ = false;
   bool quick_ = false;
+  bool corrected_ = true;
+  long probe_steps_ = 0;  // ODE steps taken during build (the oracle's probe run)
+  // native mode: contact rows whose corrected damping did not hold (c < h k),
+  // and the largest h k / c seen
+  long rows_correction_invalid_ = 0;
+  long rows_made_ = 0;
+  double worst_hk_over_c_ = 0.0;
   double step_s_ = 1e-4;
   int substeps_ = 1;
   long steps_ = 0;
@@ -180,14 +202,6 @@ Capability OdeEngine::supports(const Case& c) const {
                           "non-placeable and cannot move",
                           b.name)};
     }
-    if (const auto* p = std::get_if<Polygon>(&b.shape)) {
-      if (!internal::ode::is_convex_ccw(p->points_m)) {
-        return {Support::unsupported,
-                fmt::format("body '{}' is a non-convex polygon: ODE's convex geom (dCreateConvex) "
-                            "needs a convex, counter-clockwise outline",
-                            b.name)};
-      }
-    }
     if (!b.fixed && !(b.mass_kg > 0.0 && b.inertia_kgm2 > 0.0)) {
       return {Support::unsupported,
               fmt::format("body '{}' moves but has no positive mass and inertia", b.name)};
@@ -195,42 +209,109 @@ Capability OdeEngine::supports(const Case& c) const {
   }
   if (settings_.mode == "inject") return {Support::native, ""};
   std::string mapped;
+  auto add = [&](const std::string& why) {
+    mapped += (mapped.empty() ? "" : "; ") + why;
+  };
+  for (const Body& b : c.bodies) {
+    const auto* p = std::get_if<Polygon>(&b.shape);
+    if (p != nullptr && !internal::ode::is_convex_ccw(p->points_m)) {
+      add(fmt::format("body '{}': a non-convex polygon as convex prisms of its pieces", b.name));
+    }
+  }
   for (const ContactPair& p : c.contacts) {
     if (is_plain_kelvin_voigt(p.law)) continue;
-    mapped += fmt::format(
-        "{}pair '{}': {} -> linear spring-damper with the first impact's force duration and "
-        "restitution (ODE soft contacts are linear)",
-        mapped.empty() ? "" : "; ", p.name, contact_law_name(p.law));
+    if (settings_.mode == "oracle") {
+      add(fmt::format(
+          "pair '{}': {} -> linear spring-damper with the first impact's force duration and "
+          "restitution (ODE soft contacts are linear; calibrated on a probe run)",
+          p.name, contact_law_name(p.law)));
+    } else {
+      add(fmt::format(
+          "pair '{}': {} as ODE's linear soft contact, its stiffness and damping set each step "
+          "from the law at the current penetration",
+          p.name, contact_law_name(p.law)));
+    }
   }
   if (!mapped.empty()) return {Support::mapped, mapped};
   return {Support::native, ""};
 }
 
+Physics OdeEngine::physics() const {
+  Physics p;
+  p.mode = settings_.mode;
+  p.collision_by = "engine";
+  p.collision =
+      "ODE's own colliders (dSpaceCollide, near callback, dCollide) on spheres, convex prisms and "
+      "planes";
+  if (settings_.mode == "inject") {
+    p.contact_force_by = "adapter (case law)";
+    p.contact_force =
+        "the case's law evaluated by the adapter at ODE's contact geometry and applied with "
+        "dBodyAddForceAtPos; ODE integrates it";
+    p.parameters = "the case's law as stated";
+  } else if (settings_.mode == "oracle") {
+    p.contact_force_by = "engine";
+    p.contact_force = "ODE's soft contact joints (ERP/CFM), the deepest contact of each pair";
+    p.parameters =
+        "one linear spring-damper per pair calibrated on a contact-free probe run of the case "
+        "(the first impact's effective mass and approach speed); auto sub-stepping when "
+        "ode.substeps = 0";
+    p.foreknowledge = true;
+  } else {
+    p.contact_force_by = "engine";
+    p.contact_force =
+        "ODE's soft contact joints (ERP/CFM), one per contact ODE reports, solved by ODE's LCP";
+    p.parameters =
+        "each step, from the case's law at the pair's current penetration and the approach speed "
+        "latched at its onset (linearised: k = F_elastic / delta, c = the law's damping "
+        "coefficient), spread over the pair's contacts (k_i = k delta / sum d_j, c_i = c d_i / "
+        "sum d_j)";
+  }
+  return p;
+}
+
 void OdeEngine::build(const Case& c, const SettingsOverrides& overrides) {
   settings_ = OdeSettings{};
   binder_.apply(overrides);
+  internal::ode::validate_ode_settings(settings_, overrides);
   internal::ode::ensure_ode_ready_in_this_thread();
   const Capability cap = supports(c);
   if (cap.support == Support::unsupported) throw EngineError("ode: " + cap.reason);
 
   case_ = c;
   inject_ = settings_.mode == "inject";
+  oracle_ = settings_.mode == "oracle";
   quick_ = settings_.stepper == "quick";
+  corrected_ = settings_.damping_mapping == "corrected";
   steps_ = 0;
+  probe_steps_ = 0;
+  rows_correction_invalid_ = 0;
+  rows_made_ = 0;
+  worst_hk_over_c_ = 0.0;
   diverged_.clear();
   tracker_ = EpisodeTracker{};
   world_.reset();
   collider_.reset();
 
-  // first touches from a contact-free run, then the mapping and the step
-  const std::vector<FirstTouch> touches = internal::ode::probe_first_touches(case_, settings_.dt_s);
-  try {
-    map_contacts(touches);
-  } catch (const EngineError&) {
-    throw;
-  } catch (const std::exception& e) {
-    // a law the mapping cannot handle (e.g. a collision that never ends)
-    throw EngineError(fmt::format("ode: cannot map the case's contact laws: {}", e.what()));
+  // every ODE step this build takes (a trace, not the probe's own count)
+  const long steps_at_start = internal::ode::world_steps_on_this_thread();
+  if (oracle_) {
+    // first touches from a contact-free run, then the mapping and the step
+    long probe_steps = 0;
+    const std::vector<FirstTouch> touches =
+        internal::ode::probe_first_touches(case_, settings_.dt_s, probe_steps);
+    try {
+      map_contacts_oracle(touches);
+    } catch (const EngineError&) {
+      throw;
+    } catch (const std::exception& e) {
+      // a law the mapping cannot handle (e.g. a collision that never ends)
+      throw EngineError(fmt::format("ode: cannot map the case's contact laws: {}", e.what()));
+    }
+  } else {
+    substeps_ = settings_.substeps;
+    step_s_ = settings_.dt_s / substeps_;
+    map_contacts_native();
   }
 
   world_ = std::make_unique<OdeWorld>(case_);
@@ -238,8 +319,9 @@ void OdeEngine::build(const Case& c, const SettingsOverrides& overrides) {
   collider_ = std::make_unique<PairCollider>(case_, *world_);
   const std::size_t pairs = case_.contacts.size();
   track_.assign(pairs, PairTrack{});
-  feedback_.assign(pairs, dJointFeedback{});
-  joint_made_.assign(pairs, 0);
+  feedback_per_pair_ = oracle_ ? 1 : static_cast<std::size_t>(collider_->capacity());
+  feedback_.assign(pairs * feedback_per_pair_, dJointFeedback{});
+  joints_made_.assign(pairs, 0);
   now_.assign(pairs, PairContact{});
   angle_rad_.clear();
   force_n_.assign(case_.bodies.size(), Vec2::Zero());
@@ -292,6 +374,8 @@ void OdeEngine::build(const Case& c, const SettingsOverrides& overrides) {
                    settings_.quick_iterations)
              : std::string("dWorldStep (direct LCP solver, deterministic)");
 
+  probe_steps_ = internal::ode::world_steps_on_this_thread() - steps_at_start;
+
   // the state at t = 0; contacts that start penetrated store elastic
   // energy, which the runaway bounds allow for
   sample_contacts();
@@ -302,8 +386,9 @@ void OdeEngine::build(const Case& c, const SettingsOverrides& overrides) {
   world_->set_initial_contact_energy(elastic_j);
 }
 
-// the mapping of every pair, the step, and mapping_["contacts"]
-void OdeEngine::map_contacts(const std::vector<FirstTouch>& touches) {
+// oracle: the mapping of every pair from the probe run, the step, and
+// mapping_["contacts"]
+void OdeEngine::map_contacts_oracle(const std::vector<FirstTouch>& touches) {
   const bool corrected = settings_.damping_mapping == "corrected";
   std::vector<LinearLaw> linear(case_.contacts.size());
   std::vector<double> m_eff(case_.contacts.size(), 0.0);
@@ -333,7 +418,7 @@ void OdeEngine::map_contacts(const std::vector<FirstTouch>& touches) {
     }
     if (!std::isfinite(m_eff[p])) continue;  // neither body can move along the normal
     linear[p] = internal::ode::linear_law(pair.law, m_eff[p], t.found ? t.approach_speed_mps : 0.0);
-    const CollisionResponse& r = inject_ ? linear[p].law_response : linear[p].linear_response;
+    const CollisionResponse& r = linear[p].linear_response;
     needs.push_back({linear[p].stiffness_n_per_m, linear[p].damping_ns_per_m, r.force_duration_s});
   }
 
@@ -342,7 +427,7 @@ void OdeEngine::map_contacts(const std::vector<FirstTouch>& touches) {
     substeps_ = settings_.substeps;
   } else {
     substeps_ = internal::ode::auto_substeps(settings_.dt_s, needs, settings_.contact_steps,
-                                             !inject_ && corrected);
+                                             corrected);
   }
   step_s_ = settings_.dt_s / substeps_;
 
@@ -377,15 +462,7 @@ void OdeEngine::map_contacts(const std::vector<FirstTouch>& touches) {
       continue;
     }
     const LinearLaw& lin = linear[p];
-    if (inject_) {
-      jp["expressed_as"] =
-          "no ODE contact joint: the case's law (contact_force_n) evaluated every step at ODE's "
-          "contact geometry (dCollide depth, normal, pos) and applied with dBodyAddForceAtPos, "
-          "equal and opposite; Lankarani-Nikravesh latches delta_dot at onset";
-      jp["law_response_first_impact"] = response_json(lin.law_response);
-      jp["not_expressed"] = nlohmann::json::array(
-          {"the force is explicit over each step (semi-implicit Euler of ODE's integrator)"});
-    } else {
+    {
       soft_[p] = internal::ode::soft_contact(lin.stiffness_n_per_m, lin.damping_ns_per_m, step_s_,
                                              corrected);
       jp["expressed_as"] =
@@ -426,7 +503,7 @@ void OdeEngine::map_contacts(const std::vector<FirstTouch>& touches) {
                 "auto: smallest n with at least {} steps over each pair's first-impact "
                 "force phase{}",
                 settings_.contact_steps,
-                !inject_ && corrected ? " and h k <= c (corrected mapping valid)" : "");
+                corrected ? " and h k <= c (corrected mapping valid)" : "");
   mapping_["contacts"] = pairs;
   mapping_["integrator"] =
       "ODE's semi-implicit Euler (velocity first, then position with the new velocity): "
@@ -436,13 +513,136 @@ void OdeEngine::map_contacts(const std::vector<FirstTouch>& touches) {
       "dSimpleSpace + dSpaceCollide; the near callback keeps the case's contact pairs only and "
       "calls dCollide; of its contacts the deepest one is kept (a prism reports each vertex on "
       "both faces, and several soft contacts would add their springs)";
-  mapping_["contact_point"] =
-      "midpoint of the two geoms' deepest points: ODE's pos shifted by depth/2 along the normal "
-      "(sphere-plane, sphere-convex, convex-plane); sphere-sphere pos is the midpoint already";
+  add_common_mapping();
   extra_ = {{"step_s", step_s_},
             {"substeps", substeps_},
             {"ode_configuration", internal::ode::ode_configuration()},
             {"ode_pkgconfig_version", internal::ode::ode_pkgconfig_version()}};
+}
+
+// native and inject: the rule of every pair (no probe: nothing is known of
+// the run's future), and mapping_["contacts"]
+void OdeEngine::map_contacts_native() {
+  nlohmann::json pairs = nlohmann::json::array();
+  for (const ContactPair& pair : case_.contacts) {
+    nlohmann::json jp = {
+        {"pair", pair.name},
+        {"body_a", case_.bodies[static_cast<std::size_t>(pair.body_a)].name},
+        {"body_b", case_.bodies[static_cast<std::size_t>(pair.body_b)].name},
+        {"case_law", law_json(pair.law)},
+        {"threshold",
+         fmt::format("not expressed: ODE reports a contact from depth >= 0 (case threshold {} m)",
+                     pair.threshold_m)}};
+    if (inject_) {
+      jp["expressed_as"] =
+          "no ODE contact joint: the case's law (contact_force_n) evaluated every step at the "
+          "pair's penetration (its deepest contact) and applied with dBodyAddForceAtPos at the "
+          "depth-weighted centroid of its contacts along the deepest contact's normal, equal and "
+          "opposite; Lankarani-Nikravesh latches delta_dot at onset";
+      jp["not_expressed"] = nlohmann::json::array(
+          {"the force is explicit over each step (semi-implicit Euler of ODE's integrator)"});
+    } else {
+      jp["expressed_as"] =
+          "every contact dCollide reports for the pair (every convex piece of either body) is an "
+          "ODE contact joint, mode = dContactSoftERP | dContactSoftCFM, mu = 0 (frictionless), no "
+          "dContactBounce; the row's lambda >= 0 is the clamp F >= 0";
+      jp["law_per_step"] = fmt::format(
+          "each step, in the near callback's pass: delta = the deepest contact's depth, "
+          "(k, c) = the law at delta as a linear spring-damper ({}); contact i (depth d_i) gets "
+          "k_i = k delta / sum d_j and c_i = c d_i / sum d_j, so the rows' springs sum to "
+          "k delta and their dampers to c, both at the depth-weighted centroid of the contacts "
+          "(SPEC §1, one force per pair)",
+          std::holds_alternative<KelvinVoigt>(pair.law)
+              ? "Kelvin-Voigt: its own K and c (c times the ramp's cubic step at delta)"
+          : std::holds_alternative<Hertz>(pair.law)
+              ? "Hertz: k = K delta^(n-1), c = 0"
+              : "Lankarani-Nikravesh: k = K delta^(n-1), c = K delta^n 3 (1 - e^2) / 4 / "
+                "delta_dot^-, delta_dot^- the approach speed at the first step with delta > 0");
+      nlohmann::json soft = {
+          {"rule",
+           fmt::format(
+               "ERP = h k_i / (h k_i + c'), CFM = 1 / (h k_i + c'), h = {} s, damping_mapping = "
+               "{}{}",
+               step_s_, settings_.damping_mapping,
+               corrected_
+                   ? ": c' = c_i - h k_i removes backward Euler's extra damping h k_i while "
+                     "c_i >= h k_i; where c_i < h k_i it is clamped at c' = 0 and the contact "
+                     "damps like h k_i (counted in damping_correction; for "
+                     "Lankarani-Nikravesh c / k = 3 (1 - e^2) delta / (4 delta_dot^-), so this "
+                     "holds only once delta >= 4 h delta_dot^- / (3 (1 - e^2)))"
+                   : ": backward Euler adds about h k_i of damping")}};
+      if (is_plain_kelvin_voigt(pair.law)) {
+        // a linear law's numbers for one contact (a sphere on a plane): fixed
+        const auto& kv = std::get<KelvinVoigt>(pair.law);
+        const SoftContact one =
+            internal::ode::soft_contact(kv.stiffness_n_per_m, kv.damping_ns_per_m, step_s_,
+                                        corrected_);
+        soft["one_contact"] = {{"erp", one.erp},
+                               {"cfm_m_per_ns", one.cfm},
+                               {"damping_used_ns_per_m", one.damping_used_ns_per_m},
+                               {"numerical_damping_hk_ns_per_m", one.numerical_damping_ns_per_m},
+                               {"correction_valid", one.correction_valid},
+                               {"note", one.note}};
+      }
+      jp["soft_contact"] = soft;
+      nlohmann::json lost = nlohmann::json::array();
+      if (!std::holds_alternative<KelvinVoigt>(pair.law)) {
+        lost.push_back(
+            "within a step the law is linear in delta: the nonlinear stiffness is its secant at "
+            "the step's start");
+      }
+      if (case_.bodies[static_cast<std::size_t>(pair.body_a)].fixed ||
+          case_.bodies[static_cast<std::size_t>(pair.body_b)].fixed) {
+        // nothing more to say
+      }
+      jp["not_expressed"] = lost;
+    }
+    pairs.push_back(jp);
+  }
+  mapping_ = nlohmann::json::object();
+  mapping_["engine"] = "ode";
+  mapping_["mode"] = settings_.mode;
+  mapping_["dt_s"] = settings_.dt_s;
+  mapping_["substeps"] = substeps_;
+  mapping_["step_s"] = step_s_;
+  mapping_["substeps_how"] =
+      substeps_ == 1 ? std::string("none: ODE steps at dt, the step given")
+                     : fmt::format("set by ode.substeps: {} steps per dt", substeps_);
+  mapping_["contacts"] = pairs;
+  mapping_["collision"] =
+      "dSimpleSpace + dSpaceCollide; the near callback keeps the case's contact pairs only and "
+      "calls dCollide on each pair of their geoms (convex pieces); every contact is kept (a "
+      "prism reports each vertex on both faces: the spread over the depths accounts for it)";
+  add_common_mapping();
+  extra_ = {{"step_s", step_s_},
+            {"substeps", substeps_},
+            {"ode_configuration", internal::ode::ode_configuration()},
+            {"ode_pkgconfig_version", internal::ode::ode_pkgconfig_version()}};
+}
+
+void OdeEngine::add_common_mapping() {
+  mapping_["integrator"] =
+      "ODE's semi-implicit Euler (velocity first, then position with the new velocity): "
+      "positions under constant acceleration lead the exact parabola by g h t / 2; orientation "
+      "by ODE's default infinitesimal update, 2 atan(omega h / 2) per step instead of omega h";
+  mapping_["contact_point"] =
+      "midpoint of the two geoms' deepest points: ODE's pos shifted by depth/2 along the normal "
+      "(sphere-plane, sphere-convex, convex-plane); sphere-sphere pos is the midpoint already; "
+      "with several contacts, their depth-weighted centroid";
+}
+
+nlohmann::json OdeEngine::mapping() const {
+  nlohmann::json m = mapping_;
+  if (!oracle_ && !inject_ && m.is_object()) {
+    m["damping_correction"] = {
+        {"what",
+         "contact rows of this run whose corrected damping mapping did not hold (c_i < h k_i): "
+         "there ODE's implicit soft contact damps like h k_i instead of c_i"},
+        {"rows", rows_made_},
+        {"rows_invalid", rows_correction_invalid_},
+        {"worst_hk_over_c", worst_hk_over_c_}};
+  }
+  return m;
 }
 
 void OdeEngine::advance_to(double t_s) {
@@ -469,13 +669,12 @@ bool OdeEngine::injected_forces_run_away() {
       return true;
     }
     if (!(f > 0.0)) continue;
-    // g1 is pushed along the normal, g2 against it; torque r x F about each centre
-    const Vec2 n(pc.geom.normal[0], pc.geom.normal[1]);
-    for (const auto& [geom, sign] : {std::pair{pc.geom.g1, 1.0}, std::pair{pc.geom.g2, -1.0}}) {
-      if (geom == nullptr || dGeomGetBody(geom) == nullptr) continue;
-      const int i = internal::ode::OdeWorld::body_index_of(geom);
+    // body b is pushed along n_ab, body a against it; torque r x F about each centre
+    const ContactPair& pair = case_.contacts[p];
+    for (const auto& [i, sign] : {std::pair{pair.body_b, 1.0}, std::pair{pair.body_a, -1.0}}) {
+      if (world_->body(i) == nullptr) continue;
       const auto k = static_cast<std::size_t>(i);
-      const Vec2 force = sign * f * n;
+      const Vec2 force = sign * f * pc.normal_ab;
       const Vec2 r = pc.point_m - world_->state(i).position_m;
       force_n_[k] += force;
       torque_nm_[k] += r.x() * force.y() - r.y() * force.x();
@@ -493,38 +692,82 @@ bool OdeEngine::injected_forces_run_away() {
   return false;
 }
 
+// native: every contact of pair p a soft joint, the law spread over them
+// (ode_contact_mapping.hpp, spread_law)
+void OdeEngine::add_native_joints(std::size_t p) {
+  const PairContact& pc = now_[p];
+  const LinearizedLaw lin =
+      linearize_law(case_.contacts[p].law, pc.depth_m, track_[p].latched_approach_mps);
+  if (!(lin.stiffness_n_per_m > 0.0)) return;  // nothing pressed in: no force
+  for (int i = 0; i < pc.count; ++i) {
+    const dContactGeom& g = pc.geoms[static_cast<std::size_t>(i)];
+    if (!(g.depth > 0.0)) continue;  // a touching contact carries no spring
+    const internal::ode::SpreadLaw row_law = internal::ode::spread_law(
+        lin.stiffness_n_per_m, lin.damping_ns_per_m, pc.depth_m, g.depth, pc.depth_sum_m);
+    const internal::ode::SoftRow row = internal::ode::soft_row(
+        row_law.stiffness_n_per_m, row_law.damping_ns_per_m, step_s_, corrected_);
+    if (!row.correction_valid) {
+      ++rows_correction_invalid_;
+      if (row_law.damping_ns_per_m > 0.0) {
+        worst_hk_over_c_ = std::max(
+            worst_hk_over_c_, step_s_ * row_law.stiffness_n_per_m / row_law.damping_ns_per_m);
+      }
+    }
+    dContact contact{};
+    contact.surface.mode = dContactSoftERP | dContactSoftCFM;
+    contact.surface.mu = 0.0;
+    contact.surface.soft_erp = row.erp;
+    contact.surface.soft_cfm = row.cfm;
+    contact.geom = g;
+    const dJointID j = dJointCreateContact(world_->world(), world_->contact_group(), &contact);
+    dJointAttach(j, dGeomGetBody(g.g1), dGeomGetBody(g.g2));
+    auto& n = joints_made_[p];
+    dJointSetFeedback(j, &feedback_[p * feedback_per_pair_ + static_cast<std::size_t>(n)]);
+    ++n;
+    ++rows_made_;
+  }
+}
+
+// oracle: the deepest contact of pair p, with the calibrated soft contact
+void OdeEngine::add_oracle_joint(std::size_t p) {
+  const dContactGeom& g = now_[p].geoms[static_cast<std::size_t>(now_[p].deepest)];
+  dContact contact{};
+  contact.surface.mode = dContactSoftERP | dContactSoftCFM;
+  contact.surface.mu = 0.0;
+  contact.surface.soft_erp = soft_[p].erp;
+  contact.surface.soft_cfm = soft_[p].cfm;
+  contact.geom = g;
+  const dJointID j = dJointCreateContact(world_->world(), world_->contact_group(), &contact);
+  dJointAttach(j, dGeomGetBody(g.g1), dGeomGetBody(g.g2));
+  dJointSetFeedback(j, &feedback_[p * feedback_per_pair_]);
+  joints_made_[p] = 1;
+}
+
 void OdeEngine::step_once() {
   const std::size_t pairs = now_.size();
   if (inject_ && injected_forces_run_away()) return;
   // contact forces of this step, from the contacts at the current state
   for (std::size_t p = 0; p < pairs; ++p) {
-    joint_made_[p] = 0;
+    joints_made_[p] = 0;
     const PairContact& pc = now_[p];
     if (!pc.touching) continue;
-    const dBodyID b1 = dGeomGetBody(pc.geom.g1);
-    const dBodyID b2 = dGeomGetBody(pc.geom.g2);
     if (inject_) {
       const double f = track_[p].force_n;  // N, the law at the current state
       if (!(f > 0.0)) continue;
-      // the normal points into g1: g1 is pushed along it, g2 the other way
-      const Vec2 mid = pc.point_m;
-      dBodyAddForceAtPos(b1, f * pc.geom.normal[0], f * pc.geom.normal[1], 0.0, mid.x(), mid.y(),
-                         0.0);
-      if (b2 != nullptr) {
-        dBodyAddForceAtPos(b2, -f * pc.geom.normal[0], -f * pc.geom.normal[1], 0.0, mid.x(),
-                           mid.y(), 0.0);
+      // body b is pushed along n_ab, body a the other way, at the pair's point
+      const ContactPair& pair = case_.contacts[p];
+      const Vec2 at = pc.point_m;
+      if (const dBodyID b = world_->body(pair.body_b); b != nullptr) {
+        dBodyAddForceAtPos(b, f * pc.normal_ab.x(), f * pc.normal_ab.y(), 0.0, at.x(), at.y(), 0.0);
       }
+      if (const dBodyID a = world_->body(pair.body_a); a != nullptr) {
+        dBodyAddForceAtPos(a, -f * pc.normal_ab.x(), -f * pc.normal_ab.y(), 0.0, at.x(), at.y(),
+                           0.0);
+      }
+    } else if (oracle_) {
+      add_oracle_joint(p);
     } else {
-      dContact contact{};
-      contact.surface.mode = dContactSoftERP | dContactSoftCFM;
-      contact.surface.mu = 0.0;
-      contact.surface.soft_erp = soft_[p].erp;
-      contact.surface.soft_cfm = soft_[p].cfm;
-      contact.geom = pc.geom;
-      const dJointID j = dJointCreateContact(world_->world(), world_->contact_group(), &contact);
-      dJointAttach(j, b1, b2);
-      dJointSetFeedback(j, &feedback_[p]);
-      joint_made_[p] = 1;
+      add_native_joints(p);
     }
   }
 
@@ -532,21 +775,24 @@ void OdeEngine::step_once() {
     // the row-order seed is process-global: reseed and step under one lock
     const std::lock_guard<std::mutex> lock(internal::ode::quickstep_random_lock());
     dRandSetSeed(static_cast<unsigned long>(steps_));
-    dWorldQuickStep(world_->world(), step_s_);
+    internal::ode::quick_step_world(world_->world(), step_s_);
   } else {
-    dWorldStep(world_->world(), step_s_);
+    internal::ode::step_world(world_->world(), step_s_);
   }
   ++steps_;
 
-  // native: the force each contact joint applied over the step; f1 is the
-  // world-frame force on g1's body, the normal points into g1
+  // native, oracle: the force the contact joints applied over the step; f1 is
+  // the world-frame force on g1's body, the normal points into g1
   if (!inject_) {
     for (std::size_t p = 0; p < pairs; ++p) {
-      track_[p].force_n = 0.0;
-      if (!joint_made_[p]) continue;
-      const dJointFeedback& fb = feedback_[p];
-      const dReal* n = now_[p].geom.normal;
-      track_[p].force_n = std::max(0.0, fb.f1[0] * n[0] + fb.f1[1] * n[1] + fb.f1[2] * n[2]);
+      double f = 0.0;  // N
+      for (int i = 0; i < joints_made_[p]; ++i) {
+        const dJointFeedback& fb = feedback_[p * feedback_per_pair_ + static_cast<std::size_t>(i)];
+        const int k = oracle_ ? now_[p].deepest : i;
+        const dReal* n = now_[p].geoms[static_cast<std::size_t>(k)].normal;
+        f += std::max(0.0, fb.f1[0] * n[0] + fb.f1[1] * n[1] + fb.f1[2] * n[2]);
+      }
+      track_[p].force_n = f;
     }
     dJointGroupEmpty(world_->contact_group());
   }
@@ -581,8 +827,9 @@ void OdeEngine::sample_contacts() {
     PairTrack& tr = track_[p];
     const ContactPair& pair = case_.contacts[p];
     const bool in = pc.touching && pc.depth_m > 0.0;
+    // eq. 7's delta_dot^-: the approach speed at the first sample with delta > 0
+    if (in && !tr.in_contact) tr.latched_approach_mps = std::max(pc.approach_speed_mps, 0.0);
     if (inject_) {
-      if (in && !tr.in_contact) tr.latched_approach_mps = std::max(pc.approach_speed_mps, 0.0);
       tr.force_n = pc.touching ? contact_force_n(pair.law, pc.depth_m, pc.approach_speed_mps,
                                                  tr.latched_approach_mps)
                                : 0.0;

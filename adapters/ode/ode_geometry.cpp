@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <variant>
 
+#include "planarbench/convex_pieces.hpp"
 #include "planarbench/outline.hpp"
 
 namespace pb::internal::ode {
@@ -87,6 +88,43 @@ dGeomID create_shape_geom(dSpaceID space, const Body& body, ConvexPrism& prism) 
   prism = make_convex_prism(outline, prism_half_depth(outline));
   return dCreateConvex(space, prism.planes.data(), prism.plane_count, prism.points.data(),
                        prism.point_count, prism.polygons.data());
+}
+
+ShapeGeoms create_shape_geoms(dSpaceID space, const Body& body,
+                              std::vector<std::unique_ptr<ConvexPrism>>& prisms) {
+  ShapeGeoms out;
+  const auto* polygon = std::get_if<Polygon>(&body.shape);
+  if (polygon == nullptr || is_convex_ccw(polygon->points_m)) {
+    auto prism = std::make_unique<ConvexPrism>();
+    out.geoms.push_back(create_shape_geom(space, body, *prism));
+    out.offsets_m.push_back(Vec2::Zero());
+    out.description = describe_shape_geom(body, *prism);
+    prisms.push_back(std::move(prism));
+    return out;
+  }
+  // a non-convex polygon: one prism per convex piece, every prism as deep as
+  // the whole body's (no in-plane contact prefers a cap)
+  const ConvexDecomposition parts = convex_pieces(polygon->points_m, 0);
+  const double w = prism_half_depth(polygon->points_m);
+  for (const ConvexPiece& piece : parts.pieces) {
+    // the prism about the piece's centroid, placed there by the geom's offset
+    const Vec2 centre = polygon_area_properties(piece).centroid_m;
+    ConvexPiece local = piece;
+    for (Vec2& q : local) q -= centre;
+    auto prism = std::make_unique<ConvexPrism>(make_convex_prism(local, w));
+    out.offsets_m.push_back(centre);
+    out.geoms.push_back(dCreateConvex(space, prism->planes.data(), prism->plane_count,
+                                      prism->points.data(), prism->point_count,
+                                      prism->polygons.data()));
+    prisms.push_back(std::move(prism));
+  }
+  out.description = fmt::format(
+      "{} dCreateConvex prisms, z in [-{}, {}] m, one per convex piece of the non-convex "
+      "{}-point polygon ({}), each built about its piece's centroid and offset there on the "
+      "body: ODE collides each piece; the pair's contacts from every piece are one contact of "
+      "the case",
+      parts.pieces.size(), w, w, polygon->points_m.size(), parts.method);
+  return out;
 }
 
 std::string describe_shape_geom(const Body& body, const ConvexPrism& prism) {

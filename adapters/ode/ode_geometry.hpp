@@ -1,11 +1,14 @@
 // Case shapes as ODE geoms. Circle -> sphere (exact, one contact point; a
 // cylinder would give two and double the spring, ENGINES.md). Ellipse and
-// polygon -> a convex prism extruded along z from the body's outline (ODE has
-// no ellipse). Fixed half-plane -> dCreatePlane with the case's orientation.
+// convex polygon -> a convex prism extruded along z from the body's outline
+// (ODE has no ellipse). Non-convex polygon -> one convex prism per piece of
+// its convex decomposition (planarbench/convex_pieces.hpp, CGAL), all on the
+// same body. Fixed half-plane -> dCreatePlane with the case's orientation.
 #pragma once
 
 #include <ode/ode.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -45,8 +48,24 @@ struct PlaneCoefficients {
 
 // Creates the geom of a body's shape in `space` (not placed, no body).
 // Half-planes are not handled here (they need the pose: halfplane_plane).
-// `prism` receives the convex arrays for ellipses and polygons.
+// `prism` receives the convex arrays for ellipses and polygons; a polygon must
+// be convex here (shape_geoms takes any).
 [[nodiscard]] dGeomID create_shape_geom(dSpaceID space, const Body& body, ConvexPrism& prism);
+
+// The geoms of a body's shape, one per convex piece (a circle, an ellipse or a
+// convex polygon is one). `prisms` receives one ConvexPrism per prism geom
+// (stable addresses: ODE keeps pointers into them); `method` how a non-convex
+// polygon was cut ("" otherwise).
+struct ShapeGeoms {
+  std::vector<dGeomID> geoms;
+  // per geom: where its own origin lies in the body frame, m (a piece's
+  // prism is built about the piece's centroid: ODE's convex collider wants
+  // the geom's origin inside it); zero for a whole shape
+  std::vector<Vec2> offsets_m;
+  std::string description;  // one line for the mapping: what the shape became
+};
+[[nodiscard]] ShapeGeoms create_shape_geoms(dSpaceID space, const Body& body,
+                                            std::vector<std::unique_ptr<ConvexPrism>>& prisms);
 
 // one line for the mapping: what the shape became
 [[nodiscard]] std::string describe_shape_geom(const Body& body, const ConvexPrism& prism);

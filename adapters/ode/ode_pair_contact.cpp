@@ -10,7 +10,9 @@ namespace {
 // a convex prism of n outline points reports at most 2n vertices
 constexpr int kMinContactBuffer = 16;
 
-int contact_capacity(const Case& c) {
+// contacts dCollide may give for one geom pair, and for one case pair (every
+// piece of one body against every piece of the other)
+int geom_pair_capacity(const Case& c) {
   int most = kMinContactBuffer;
   for (const Body& b : c.bodies) {
     const int pts = std::holds_alternative<Polygon>(b.shape)
@@ -53,7 +55,7 @@ Vec2 contact_midpoint(const dContactGeom& g) {
 }
 
 PairCollider::PairCollider(const Case& c, const OdeWorld& world)
-    : case_(&c), world_(&world), buffer_(static_cast<std::size_t>(contact_capacity(c))) {
+    : case_(&c), world_(&world), buffer_(static_cast<std::size_t>(geom_pair_capacity(c))) {
   const std::size_t n = c.bodies.size();
   pair_of_.assign(n * n, -1);
   for (std::size_t p = 0; p < c.contacts.size(); ++p) {
@@ -62,14 +64,26 @@ PairCollider::PairCollider(const Case& c, const OdeWorld& world)
     pair_of_[a * n + b] = static_cast<int>(p);
     pair_of_[b * n + a] = static_cast<int>(p);
   }
+  int pieces = 1;
+  for (std::size_t i = 0; i < n; ++i) pieces = std::max(pieces, world.geom_count(static_cast<int>(i)));
+  capacity_ = geom_pair_capacity(c) * pieces * pieces;
 }
 
 void PairCollider::collide(std::vector<PairContact>& out) {
   out.resize(case_->contacts.size());
-  for (PairContact& pc : out) pc.touching = false;
+  for (PairContact& pc : out) {
+    if (pc.geoms.size() != static_cast<std::size_t>(capacity_)) {
+      pc.geoms.resize(static_cast<std::size_t>(capacity_));
+    }
+    pc.touching = false;
+    pc.count = 0;
+    pc.contacts_reported = 0;
+    pc.deepest = -1;
+  }
   out_ = &out;
   dSpaceCollide(world_->space(), this, &PairCollider::near_callback);
   out_ = nullptr;
+  for (std::size_t p = 0; p < out.size(); ++p) summarise(static_cast<int>(p), out[p]);
 }
 
 void PairCollider::near_callback(void* data, dGeomID o1, dGeomID o2) {
@@ -77,53 +91,70 @@ void PairCollider::near_callback(void* data, dGeomID o1, dGeomID o2) {
   const auto n = self->case_->bodies.size();
   const auto i = static_cast<std::size_t>(OdeWorld::body_index_of(o1));
   const auto j = static_cast<std::size_t>(OdeWorld::body_index_of(o2));
-  // only the case's contact pairs collide
+  // only the case's contact pairs collide (pieces of one body never)
   const int pair = self->pair_of_[i * n + j];
   if (pair < 0) return;
-  self->collide_pair(pair, (*self->out_)[static_cast<std::size_t>(pair)]);
+  self->collide_geoms(pair, o1, o2, (*self->out_)[static_cast<std::size_t>(pair)]);
 }
 
-void PairCollider::collide_pair(int pair, PairContact& out) {
+void PairCollider::collide_geoms(int pair, dGeomID g, dGeomID h, PairContact& out) {
   const ContactPair& cp = case_->contacts[static_cast<std::size_t>(pair)];
   const dBodyID body_a = world_->body(cp.body_a);
   const dBodyID body_b = world_->body(cp.body_b);
   if (body_a == nullptr && body_b == nullptr) return;  // two fixed bodies never move
   // g1 must have a body: a contact joint attached to (0, body) is stored
   // reversed by ODE, and its feedback f1 would then belong to the other side
+  const bool g_is_a = OdeWorld::body_index_of(g) == cp.body_a;
+  const dGeomID geom_a = g_is_a ? g : h;
+  const dGeomID geom_b = g_is_a ? h : g;
   const bool a_first = body_a != nullptr;
-  const dGeomID o1 = a_first ? world_->geom(cp.body_a) : world_->geom(cp.body_b);
-  const dGeomID o2 = a_first ? world_->geom(cp.body_b) : world_->geom(cp.body_a);
+  const dGeomID o1 = a_first ? geom_a : geom_b;
+  const dGeomID o2 = a_first ? geom_b : geom_a;
   const int count = dCollide(o1, o2, static_cast<int>(buffer_.size()), buffer_.data(),
                              static_cast<int>(sizeof(dContactGeom)));
-  out.contacts_reported = count;
-  if (count <= 0) return;
-
-  // one contact per pair, the deepest: a prism reports each penetrating
-  // vertex twice (z = -w and z = +w) and several soft contacts would add
-  // their springs (the paper too uses one contact point per pair)
-  int deepest = 0;
-  for (int k = 1; k < count; ++k) {
-    if (buffer_[static_cast<std::size_t>(k)].depth >
-        buffer_[static_cast<std::size_t>(deepest)].depth) {
-      deepest = k;
-    }
+  out.contacts_reported += std::max(count, 0);
+  for (int k = 0; k < count && out.count < capacity_; ++k) {
+    dContactGeom c = buffer_[static_cast<std::size_t>(k)];
+    // keep the contact in the plane z = 0
+    c.pos[2] = 0.0;
+    c.normal[2] = 0.0;
+    const double len = std::hypot(c.normal[0], c.normal[1]);
+    if (!(len > 0.0)) continue;  // a normal along z: not a planar contact
+    c.normal[0] /= len;
+    c.normal[1] /= len;
+    out.geoms[static_cast<std::size_t>(out.count++)] = c;
   }
-  dContactGeom g = buffer_[static_cast<std::size_t>(deepest)];
-  // keep the contact in the plane z = 0
-  g.pos[2] = 0.0;
-  g.normal[2] = 0.0;
-  const double len = std::hypot(g.normal[0], g.normal[1]);
-  if (!(len > 0.0)) return;  // a normal along z: not a planar contact
-  g.normal[0] /= len;
-  g.normal[1] /= len;
+}
 
+void PairCollider::summarise(int pair, PairContact& out) const {
+  if (out.count == 0) return;
+  const ContactPair& cp = case_->contacts[static_cast<std::size_t>(pair)];
+  int deepest = 0;
+  double sum = 0.0;  // m
+  for (int k = 0; k < out.count; ++k) {
+    const dContactGeom& c = out.geoms[static_cast<std::size_t>(k)];
+    sum += c.depth;
+    if (c.depth > out.geoms[static_cast<std::size_t>(deepest)].depth) deepest = k;
+  }
+  const dContactGeom& g = out.geoms[static_cast<std::size_t>(deepest)];
   out.touching = true;
-  out.geom = g;
+  out.deepest = deepest;
   out.depth_m = g.depth;
-  // ODE's normal points into g1, i.e. from g2 to g1
+  out.depth_sum_m = sum;
+  // ODE's normal points into g1, i.e. from g2 to g1; g1 is body_a's when a moves
+  const bool a_first = world_->body(cp.body_a) != nullptr;
   const Vec2 n_into_g1(g.normal[0], g.normal[1]);
   out.normal_ab = a_first ? Vec2(-n_into_g1) : n_into_g1;
-  out.point_m = contact_midpoint(g);
+  if (out.count == 1 || !(sum > 0.0)) {
+    out.point_m = contact_midpoint(g);
+  } else {
+    Vec2 moment = Vec2::Zero();  // m^2
+    for (int k = 0; k < out.count; ++k) {
+      const dContactGeom& c = out.geoms[static_cast<std::size_t>(k)];
+      moment += c.depth * contact_midpoint(c);
+    }
+    out.point_m = moment / sum;
+  }
   out.approach_speed_mps = approach_speed_mps(*world_, cp, out.point_m, out.normal_ab);
 }
 

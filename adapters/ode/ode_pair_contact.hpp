@@ -1,7 +1,10 @@
 // ODE's narrow phase for the case's contact pairs only: dSpaceCollide with a
-// near callback that skips every pair the case does not list, and dCollide's
-// contact geoms reduced to the one deepest contact per pair, mapped to the
-// case's conventions (normal from body_a to body_b).
+// near callback that skips every geom pair the case does not list, and every
+// contact dCollide reports for a listed pair (a body may be several convex
+// pieces, each its own geom), mapped to the case's conventions (normal from
+// body_a to body_b). One pair's contacts are one contact of the case (SPEC
+// §1, one force per pair): its penetration is the deepest contact's depth,
+// its point the depth-weighted centroid of the contacts' points.
 #pragma once
 
 #include <ode/ode.h>
@@ -15,14 +18,18 @@ namespace pb::internal::ode {
 
 struct PairContact {
   bool touching = false;            // dCollide reported a contact (depth >= 0)
-  double depth_m = 0.0;             // m, ODE's depth of the deepest contact
-  Vec2 normal_ab = Vec2::Zero();    // unit, from body_a to body_b
-  Vec2 point_m = Vec2::Zero();      // m, midpoint of the two bodies' deepest points
-  double approach_speed_mps = 0.0;  // m/s, relative normal speed, > 0 approaching
-  // the contact for ODE: g1 is the geom with a body; normal points into g1
-  // (ODE convention, contact.h); pos and normal lie in z = 0
-  dContactGeom geom{};
-  int contacts_reported = 0;  // how many contact geoms dCollide gave
+  double depth_m = 0.0;             // m, delta: the deepest contact's depth
+  double depth_sum_m = 0.0;         // m, the sum of every contact's depth
+  Vec2 normal_ab = Vec2::Zero();    // unit, from body_a to body_b, of the deepest contact
+  Vec2 point_m = Vec2::Zero();      // m, depth-weighted centroid of the contacts' midpoints
+  double approach_speed_mps = 0.0;  // m/s, relative normal speed at point_m, > 0 approaching
+  int deepest = -1;                 // index into geoms of the deepest contact
+  // every contact of the pair for ODE: g1 is a geom with a body (body_a's
+  // when body_a moves); normal points into g1 (ODE convention, contact.h);
+  // pos and normal lie in z = 0. Capacity fixed at construction.
+  std::vector<dContactGeom> geoms;
+  int count = 0;              // contacts in geoms
+  int contacts_reported = 0;  // contacts dCollide gave (before dropping out-of-plane ones)
 };
 
 class PairCollider {
@@ -30,17 +37,22 @@ class PairCollider {
   PairCollider(const Case& c, const OdeWorld& world);
 
   // dSpaceCollide over the world's space; out[p] is pair p's contact
-  // (touching = false when its geoms do not overlap). Allocation-free.
+  // (touching = false when its geoms do not overlap). Allocation-free after
+  // the first call.
   void collide(std::vector<PairContact>& out);
+  // the most contacts one pair can hold
+  [[nodiscard]] int capacity() const { return capacity_; }
 
  private:
   static void near_callback(void* data, dGeomID o1, dGeomID o2);
-  void collide_pair(int pair, PairContact& out);
+  void collide_geoms(int pair, dGeomID g, dGeomID h, PairContact& out);
+  void summarise(int pair, PairContact& out) const;
 
   const Case* case_;
   const OdeWorld* world_;
   std::vector<int> pair_of_;  // n x n body indices -> pair index, -1 = no pair
   std::vector<dContactGeom> buffer_;
+  int capacity_ = 0;
   std::vector<PairContact>* out_ = nullptr;
 };
 

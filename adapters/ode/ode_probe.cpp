@@ -7,7 +7,8 @@
 
 namespace pb::internal::ode {
 
-std::vector<FirstTouch> probe_first_touches(const Case& c, double h) {
+std::vector<FirstTouch> probe_first_touches(const Case& c, double h, long& steps_taken) {
+  steps_taken = 0;
   std::vector<FirstTouch> out(c.contacts.size());
   OdeWorld world(c);
   PairCollider collider(c, world);
@@ -33,8 +34,9 @@ std::vector<FirstTouch> probe_first_touches(const Case& c, double h) {
       out[p].centres_m = world.centres();
       --waiting;
     }
-    if (k >= last_step || world.first_blown_up_body() >= 0) break;
-    dWorldStep(world.world(), h);
+    if (waiting == 0 || k >= last_step || world.first_blown_up_body() >= 0) break;
+    step_world(world.world(), h);
+    ++steps_taken;
     world.remove_planar_drift();
   }
   return out;

@@ -24,6 +24,8 @@ struct FirstTouch {
 // Steps the case's ODE model with dWorldStep at step_s, no contact joints,
 // until every pair with a moving body has touched or the case's duration
 // has passed. Result index = Case::contacts index.
-[[nodiscard]] std::vector<FirstTouch> probe_first_touches(const Case& c, double step_s);
+// steps_taken: the dWorldStep calls the probe made.
+[[nodiscard]] std::vector<FirstTouch> probe_first_touches(const Case& c, double step_s,
+                                                          long& steps_taken);
 
 }  // namespace pb::internal::ode

@@ -9,12 +9,14 @@
 namespace pb::internal::ode {
 
 struct OdeSettings {
-  // s, the base step; "dt" is shared with the other fixed-step engines
+  // s, the step; "dt" is shared with the other fixed-step engines
   double dt_s = 1e-4;
-  // steps per dt: 0 = auto (the smallest n for which the corrected damping
-  // mapping is valid and the first impact spans contact_steps steps)
-  int substeps = 0;
-  // auto substeps: at least this many steps over the first impact's force phase
+  // steps per dt: 1 = ODE steps at dt, the step the user gave (default);
+  // n > 1: n equal steps per dt; 0 = auto, mode = oracle only: the smallest n
+  // for which the corrected damping mapping is valid and the first impact
+  // (found by the oracle's probe run) spans contact_steps steps
+  int substeps = 1;
+  // auto substeps (oracle): at least this many steps over the first impact's force phase
   int contact_steps = 20;
   // "world": dWorldStep, the direct (Dantzig LCP) solver, deterministic;
   // "quick": dWorldQuickStep, iterative SOR with randomly reordered rows
@@ -24,13 +26,23 @@ struct OdeSettings {
   // "corrected": soft contact from c' = c - h k (removes the backward-Euler
   // damping h k); "textbook": ERP = hk/(hk + c), CFM = 1/(hk + c) (ODE manual)
   std::string damping_mapping = "corrected";
-  // "native": ODE contact joints (soft ERP/CFM); "inject": no contact joints,
-  // the case's force law applied with dBodyAddForceAtPos at ODE's contact geometry
+  // "native" (default): ODE's own collision and soft contact joints; every
+  // contact's ERP/CFM is set each step, as ODE's near callbacks do, from the
+  // case's law at the pair's current penetration (linearised), spread over
+  // the pair's contacts. "oracle": the law replaced by one spring-damper
+  // calibrated on a contact-free probe run (the first impact's effective mass
+  // and speed), deepest contact only: foreknowledge, opt-in. "inject": no
+  // contact joints, the case's force law applied with dBodyAddForceAtPos at
+  // ODE's contact geometry.
   std::string mode = "native";
 };
 
 // Binds every member of `s` under engine name "ode"; the binder keeps
 // pointers into `s`, which must outlive it.
 [[nodiscard]] SettingsBinder bind_ode_settings(OdeSettings& s);
+
+// Checks what the binder cannot (substeps = 0 needs mode = oracle); throws
+// InputError naming the key and where its value came from.
+void validate_ode_settings(const OdeSettings& s, const SettingsOverrides& given);
 
 }  // namespace pb::internal::ode

@@ -13,6 +13,22 @@
 namespace pb::internal::ode {
 
 namespace {
+thread_local long t_world_steps = 0;
+}  // namespace
+
+void step_world(dWorldID world, double step_s) {
+  dWorldStep(world, step_s);
+  ++t_world_steps;
+}
+
+void quick_step_world(dWorldID world, double step_s) {
+  dWorldQuickStep(world, step_s);
+  ++t_world_steps;
+}
+
+long world_steps_on_this_thread() { return t_world_steps; }
+
+namespace {
 
 // ODE body with the case's mass and inertia; I_xx = I_yy = I_zz = the case's
 // planar inertia: a valid inertia tensor (positive, triangle inequality
@@ -95,7 +111,7 @@ void OdeWorld::build(const Case& c) {
 
   const std::size_t n = c.bodies.size();
   bodies_.assign(n, nullptr);
-  geoms_.assign(n, nullptr);
+  geoms_.assign(n, {});
   planar_.assign(n, false);
   descriptions_.resize(n);
 
@@ -104,32 +120,40 @@ void OdeWorld::build(const Case& c) {
     if (!b.fixed) bodies_[i] = make_body(world_, b);
 
     // geometry: half-planes are non-placeable ODE planes, so they must be fixed
-    dGeomID g = nullptr;
-    auto prism = std::make_unique<ConvexPrism>();
+    std::vector<dGeomID> gs;
     if (std::holds_alternative<HalfPlane>(b.shape)) {
       if (!b.fixed) {
         throw EngineError(
             fmt::format("ode: body '{}' is a moving half-plane; ODE planes cannot move", b.name));
       }
       const PlaneCoefficients pc = halfplane_plane(b.position_m, b.angle_rad);
-      g = dCreatePlane(space_, pc.a, pc.b, pc.c, pc.d);
+      gs.push_back(dCreatePlane(space_, pc.a, pc.b, pc.c, pc.d));
+      descriptions_[i] = describe_shape_geom(b, ConvexPrism{});
     } else {
-      g = create_shape_geom(space_, b, *prism);
-      if (bodies_[i] != nullptr) {
-        dGeomSetBody(g, bodies_[i]);
-      } else {
-        const Vector3 p = to_ode_vector(b.position_m);
-        dGeomSetPosition(g, p[0], p[1], p[2]);
-        const Quaternion q = to_ode_quaternion(b.angle_rad);
-        const dQuaternion dq = {q[0], q[1], q[2], q[3]};
-        dGeomSetQuaternion(g, dq);
+      ShapeGeoms sg = create_shape_geoms(space_, b, prisms_);
+      gs = std::move(sg.geoms);
+      descriptions_[i] = std::move(sg.description);
+      const double cos_a = std::cos(b.angle_rad);
+      const double sin_a = std::sin(b.angle_rad);
+      for (std::size_t k = 0; k < gs.size(); ++k) {
+        const dGeomID g = gs[k];
+        const Vec2& off = sg.offsets_m[k];
+        if (bodies_[i] != nullptr) {
+          dGeomSetBody(g, bodies_[i]);
+          if (!off.isZero(0.0)) dGeomSetOffsetPosition(g, off.x(), off.y(), 0.0);
+        } else {
+          const Vector3 p = to_ode_vector(b.position_m + Vec2(cos_a * off.x() - sin_a * off.y(),
+                                                              sin_a * off.x() + cos_a * off.y()));
+          dGeomSetPosition(g, p[0], p[1], p[2]);
+          const Quaternion q = to_ode_quaternion(b.angle_rad);
+          const dQuaternion dq = {q[0], q[1], q[2], q[3]};
+          dGeomSetQuaternion(g, dq);
+        }
       }
     }
     geom_data_.push_back(std::make_unique<int>(static_cast<int>(i)));
-    dGeomSetData(g, geom_data_.back().get());
-    descriptions_[i] = describe_shape_geom(b, *prism);
-    prisms_.push_back(std::move(prism));
-    geoms_[i] = g;
+    for (const dGeomID g : gs) dGeomSetData(g, geom_data_.back().get());
+    geoms_[i] = std::move(gs);
   }
 
   // revolute joints to ground: a hinge about z through the anchor

@@ -18,6 +18,15 @@
 
 namespace pb::internal::ode {
 
+// dWorldStep(world, h), counted: every ODE step of this thread, whoever takes
+// it (a run, the oracle's probe). The count is a trace: the engine reads it
+// before and after build to prove that its default mode steps nothing ahead
+// of t = 0 (SPEC §5b).
+void step_world(dWorldID world, double step_s);
+// dWorldQuickStep(world, h), counted the same way
+void quick_step_world(dWorldID world, double step_s);
+[[nodiscard]] long world_steps_on_this_thread();
+
 class OdeWorld {
  public:
   // Throws EngineError when a body cannot be built (e.g. a moving half-plane).
@@ -31,7 +40,13 @@ class OdeWorld {
   [[nodiscard]] dJointGroupID contact_group() const { return contact_group_; }
   // nullptr for fixed bodies
   [[nodiscard]] dBodyID body(int i) const { return bodies_[static_cast<std::size_t>(i)]; }
-  [[nodiscard]] dGeomID geom(int i) const { return geoms_[static_cast<std::size_t>(i)]; }
+  // the geoms of body i: one per convex piece of its shape
+  [[nodiscard]] const std::vector<dGeomID>& geoms(int i) const {
+    return geoms_[static_cast<std::size_t>(i)];
+  }
+  [[nodiscard]] int geom_count(int i) const {
+    return static_cast<int>(geoms_[static_cast<std::size_t>(i)].size());
+  }
   // the case body index of a geom of this world (stored as the geom's data)
   [[nodiscard]] static int body_index_of(dGeomID g);
   [[nodiscard]] int body_count() const { return static_cast<int>(bodies_.size()); }
@@ -96,7 +111,7 @@ class OdeWorld {
   dSpaceID space_ = nullptr;
   dJointGroupID contact_group_ = nullptr;
   std::vector<dBodyID> bodies_;
-  std::vector<dGeomID> geoms_;
+  std::vector<std::vector<dGeomID>> geoms_;
   std::vector<bool> planar_;                          // held by a Plane2D joint
   std::vector<std::unique_ptr<ConvexPrism>> prisms_;  // stable addresses for dCreateConvex
   std::vector<std::unique_ptr<int>> geom_data_;       // body index behind each geom's data

@@ -1,8 +1,14 @@
-// The closed-form truth: engine "analytic" (SPEC §3). It evaluates, at any
-// time asked, the exact solution of the cases that have one: the disk on a
-// line (falling_ball, sliding) and pendulums up to their first contact
-// (dual_pendulum). There is no time step: advance_to lands on t exactly, and
-// steps() counts the phases of the piecewise closed form begun so far.
+// The truth: engine "analytic" (SPEC §3). It evaluates, at any time asked,
+// the exact solution of the cases that have one: a body translating on a line
+// (falling_ball, sliding, square_landing, concave_arch, incline_launch), two
+// disks head on (head_on), and pendulums up to their first contact
+// (dual_pendulum, pendulum_wall); there it has no time step: advance_to lands
+// on t exactly, and steps() counts the phases of the piecewise closed form
+// begun so far. Where the closed form ends (after the pendulums' first
+// contact) or where there is none (truth = converged), the truth is the
+// reference solver at exact geometry and tight tolerance, with a Richardson
+// estimate of its error (converged_reference.hpp); the mapping says which
+// part is which.
 #include "planarbench/analytic/analytic_engine.hpp"
 
 #include <fmt/format.h>
@@ -11,15 +17,36 @@
 #include <limits>
 #include <memory>
 
+#include "body_on_line.hpp"
 #include "closed_form_match.hpp"
-#include "disk_on_line.hpp"
+#include "converged_reference.hpp"
 #include "pendulums_until_contact.hpp"
 #include "planarbench/build_info.hpp"
 #include "planarbench/errors.hpp"
+#include "planarbench/reference/pair_geometry.hpp"
+#include "two_disks_head_on.hpp"
 
 namespace pb {
 
 namespace {
+
+// why the reference at exact geometry cannot run the case ("" when it can)
+std::string exact_geometry_reason(const Case& c) {
+  for (const ContactPair& p : c.contacts) {
+    std::string why;
+    if (p.body_a < 0 || p.body_b < 0 ||
+        static_cast<std::size_t>(p.body_a) >= c.bodies.size() ||
+        static_cast<std::size_t>(p.body_b) >= c.bodies.size()) {
+      return fmt::format("contact pair '{}' names a body that does not exist", p.name);
+    }
+    if (!PairGeometry::supported(c.bodies[static_cast<std::size_t>(p.body_a)],
+                                 c.bodies[static_cast<std::size_t>(p.body_b)],
+                                 GeometryMode::exact, &why)) {
+      return fmt::format("contact pair '{}': {}", p.name, why);
+    }
+  }
+  return {};
+}
 
 class AnalyticEngine final : public Engine {
  public:
@@ -32,8 +59,24 @@ class AnalyticEngine final : public Engine {
   }
 
   [[nodiscard]] Capability supports(const Case& c) const override {
+    if (c.truth == TruthKind::converged) {
+      if (auto why = exact_geometry_reason(c); !why.empty()) {
+        return {Support::unsupported, "truth = converged: " + why};
+      }
+      return {Support::mapped,
+              "no closed form: the truth is the reference solver at exact geometry, rk45 at "
+              "rtol 1e-10, shown converged (Richardson estimate in the mapping)"};
+    }
     const internal::ClosedFormMatch m = internal::match_closed_form(c);
     if (m.kind == internal::ClosedFormKind::none) return {Support::unsupported, m.reason};
+    if (m.kind == internal::ClosedFormKind::pendulums_until_contact) {
+      if (auto why = exact_geometry_reason(c); !why.empty()) {
+        return {Support::unsupported, "after the first contact: " + why};
+      }
+      return {Support::mapped,
+              "closed form up to the first contact; after it the reference solver at exact "
+              "geometry, rk45 at rtol 1e-10, shown converged (Richardson estimate in the mapping)"};
+    }
     return {Support::native, {}};
   }
 
@@ -41,56 +84,92 @@ class AnalyticEngine final : public Engine {
 
   void build(const Case& c, const SettingsOverrides& overrides) override {
     binder_.apply(overrides);
-    disk_.reset();
+    body_.reset();
+    disks_.reset();
     pendulums_.reset();
+    numeric_.reset();
     time_s_ = 0.0;
+    handover_s_ = std::numeric_limits<double>::infinity();
+    if (c.truth == TruthKind::converged) {
+      if (auto why = exact_geometry_reason(c); !why.empty()) {
+        throw EngineError("analytic: truth = converged: " + why);
+      }
+      numeric_ = std::make_unique<internal::ConvergedReference>(c);
+      handover_s_ = 0.0;
+      return;
+    }
     const internal::ClosedFormMatch m = internal::match_closed_form(c);
     switch (m.kind) {
       case internal::ClosedFormKind::none:
         throw EngineError("analytic: " + m.reason);
-      case internal::ClosedFormKind::disk_on_line:
-        disk_ = std::make_unique<internal::DiskOnLine>(c, m.disk, m.line, m.pair);
-        disk_->extend_to(c.duration_s);
+      case internal::ClosedFormKind::body_on_line:
+        body_ = std::make_unique<internal::BodyOnLine>(c, m.disk, m.line, m.pair);
+        body_->extend_to(c.duration_s);
+        break;
+      case internal::ClosedFormKind::two_disks_head_on:
+        disks_ = std::make_unique<internal::TwoDisksHeadOn>(c, m.disk, m.line, m.pair);
+        disks_->extend_to(c.duration_s);
         break;
       case internal::ClosedFormKind::pendulums_until_contact:
         pendulums_ = std::make_unique<internal::PendulumsUntilContact>(c);
         pendulums_->extend_to(c.duration_s);
+        if (const auto& fc = pendulums_->first_contact()) {
+          handover_s_ = fc->time_s;
+          numeric_ = std::make_unique<internal::ConvergedReference>(c);
+        }
         break;
     }
   }
 
   void advance_to(double t_s) override {
-    if (!disk_ && !pendulums_) throw EngineError("analytic: advance_to before build");
+    if (!body_ && !disks_ && !pendulums_ && !numeric_) {
+      throw EngineError("analytic: advance_to before build");
+    }
     if (!(t_s >= time_s_) || !std::isfinite(t_s)) {
       throw EngineError(
           fmt::format("analytic: cannot advance from t = {} s to t = {} s", time_s_, t_s));
     }
     // events beyond the case's duration are located when first asked for
-    if (disk_) disk_->extend_to(t_s);
+    if (body_) body_->extend_to(t_s);
+    if (disks_) disks_->extend_to(t_s);
     if (pendulums_) pendulums_->extend_to(t_s);
+    if (numeric_ && t_s > handover_s_) numeric_->advance_to(t_s);
     time_s_ = t_s;
   }
 
   [[nodiscard]] double time() const override { return time_s_; }
 
   void body_states(std::vector<BodyState>& out) const override {
-    if (disk_) disk_->body_states(time_s_, out);
+    if (numeric_now()) {
+      numeric_->body_states(out);
+      return;
+    }
+    if (body_) body_->body_states(time_s_, out);
+    if (disks_) disks_->body_states(time_s_, out);
     if (pendulums_) pendulums_->body_states(time_s_, out);
   }
 
   void contacts(std::vector<ContactSample>& out) const override {
     out.clear();
+    if (numeric_now()) {
+      numeric_->contacts(out);
+      return;
+    }
     // the pendulums' closed form ends at the first contact: no samples
-    if (disk_) disk_->contacts(time_s_, out);
+    if (body_) body_->contacts(time_s_, out);
+    if (disks_) disks_->contacts(time_s_, out);
   }
 
   [[nodiscard]] std::vector<ContactEpisode> episodes() const override {
-    if (disk_) return disk_->episodes(time_s_);
+    if (body_) return body_->episodes(time_s_);
+    if (disks_) return disks_->episodes(time_s_);
+    // the numerical part's episodes; before the handover only the first
+    // contact's onset is known, from the closed form
+    if (numeric_now()) return numeric_->episodes();
     std::vector<ContactEpisode> out;
     if (!pendulums_) return out;
     const auto& fc = pendulums_->first_contact();
     if (!fc || fc->time_s > time_s_) return out;
-    // only the onset of the first contact is known in closed form
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
     ContactEpisode ep;
     ep.body_a = fc->body_a;
@@ -108,35 +187,75 @@ class AnalyticEngine final : public Engine {
   }
 
   [[nodiscard]] long steps() const override {
-    if (disk_) return disk_->phases_begun(time_s_);
+    if (body_) return body_->phases_begun(time_s_);
+    if (disks_) return disks_->phases_begun(time_s_);
+    long n = 0;
     if (pendulums_) {
       const auto& fc = pendulums_->first_contact();
-      return fc && fc->time_s <= time_s_ ? 2 : 1;
+      n += fc && fc->time_s <= time_s_ ? 2 : 1;
     }
-    return 0;
+    if (numeric_now()) n += numeric_->steps();
+    return n;
   }
 
   [[nodiscard]] nlohmann::json mapping() const override {
-    if (disk_) return disk_->mapping();
-    if (pendulums_) return pendulums_->mapping();
-    return nlohmann::json{{"closed_form", "none"}};
+    nlohmann::json j = nlohmann::json{{"closed_form", "none"}};
+    if (body_) j = body_->mapping();
+    if (disks_) j = disks_->mapping();
+    if (pendulums_) j = pendulums_->mapping();
+    if (numeric_) {
+      j["numerical_truth"] = numeric_->description();
+      j["numerical_from_s"] = handover_s_;
+      j["numerical_why"] =
+          handover_s_ > 0.0
+              ? "the closed form holds up to the first contact; through and after it the truth "
+                "is the converged reference at exact geometry (SPEC §3)"
+              : "the case has no closed form (truth = converged): the converged reference at "
+                "exact geometry is the truth over the whole run (SPEC §3)";
+    }
+    return j;
+  }
+
+  [[nodiscard]] Physics physics() const override {
+    Physics p;
+    p.mode = "closed form";
+    p.collision_by = "closed form";
+    p.collision = "the exact shapes' gap in closed form";
+    p.contact_force_by = "closed form";
+    p.contact_force = "the case's law solved in closed form (SPEC §3)";
+    p.parameters = "the case's law as stated";
+    if (numeric_) {
+      p.mode = handover_s_ > 0.0 ? "closed form, then converged reference" : "converged reference";
+      p.collision += "; after the closed form: the reference solver's exact geometry";
+      p.contact_force += "; after it: the case's law integrated by the reference solver at "
+                         "rtol 1e-10";
+    }
+    return p;
   }
 
   [[nodiscard]] nlohmann::json extra_attributes() const override {
     nlohmann::json j = nlohmann::json::object();
-    if (pendulums_) {
-      // the states are the truth up to the first contact only
-      const auto& fc = pendulums_->first_contact();
-      j["valid_until_s"] = fc ? fc->time_s : pendulums_->searched_until_s();
+    if (pendulums_ && !numeric_) {
+      // no contact found: the states are the truth as far as searched
+      j["valid_until_s"] = pendulums_->searched_until_s();
     }
     return j;
   }
 
  private:
+  // the numerical truth holds now: after the closed form's end, or always
+  // when there is none
+  [[nodiscard]] bool numeric_now() const {
+    return numeric_ && (time_s_ > handover_s_ || handover_s_ == 0.0);
+  }
+
   SettingsBinder binder_;
-  double time_s_ = 0.0;  // s
-  std::unique_ptr<internal::DiskOnLine> disk_;
+  double time_s_ = 0.0;      // s
+  double handover_s_ = 0.0;  // s, from here on the numerical truth (inf: none)
+  std::unique_ptr<internal::BodyOnLine> body_;
+  std::unique_ptr<internal::TwoDisksHeadOn> disks_;
   std::unique_ptr<internal::PendulumsUntilContact> pendulums_;
+  std::unique_ptr<internal::ConvergedReference> numeric_;
 };
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <variant>
 #include <vector>
 
+#include "body_on_line.hpp"
 #include "exact_gap.hpp"
 
 namespace pb::internal {
@@ -26,62 +27,101 @@ const Body& body(const Case& c, int i) {
   return c.bodies[static_cast<std::size_t>(i)];
 }
 
-// exactly one moving disk, one fixed half-plane, one plain Kelvin-Voigt pair
-ClosedFormMatch match_disk_on_line(const Case& c) {
+// the one plain Kelvin-Voigt law of the case's one contact pair, or why not
+std::string plain_kelvin_voigt_reason(const Case& c) {
+  if (c.contacts.size() != 1) {
+    return fmt::format("{} contact pairs: the closed form has exactly one", c.contacts.size());
+  }
+  const ContactPair& p = c.contacts[0];
+  if (!valid_body(c, p.body_a) || !valid_body(c, p.body_b)) {
+    return fmt::format("contact pair '{}' names a body that does not exist", p.name);
+  }
+  const auto* kv = std::get_if<KelvinVoigt>(&p.law);
+  if (kv == nullptr) {
+    return fmt::format(
+        "the contact law is {}: only Kelvin-Voigt (linear in delta and delta_dot) has a closed "
+        "form here",
+        contact_law_name(p.law));
+  }
+  if (kv->damping_depth_m > 0.0) return "the damping ramp (damping_depth_m > 0) has no closed form";
+  if (!(kv->stiffness_n_per_m > 0.0) || !(kv->damping_ns_per_m >= 0.0)) {
+    return "the closed form needs stiffness > 0 and damping >= 0";
+  }
+  return {};
+}
+
+// two free disks on the line of their centres, moving along it, one plain
+// Kelvin-Voigt pair between them
+ClosedFormMatch match_two_disks(const Case& c, const std::vector<int>& moving) {
+  const Body& a = body(c, moving[0]);
+  const Body& b = body(c, moving[1]);
+  for (const Body* d : {&a, &b}) {
+    if (!std::holds_alternative<Circle>(d->shape)) {
+      return none(fmt::format("two moving bodies: the head-on closed form needs two circles, "
+                              "'{}' is a {}",
+                              d->name, shape_type_name(d->shape)));
+    }
+    if (!(d->mass_kg > 0.0)) return none(fmt::format("the disk '{}' needs a mass > 0", d->name));
+  }
+  if (c.bodies.size() != 2) {
+    return none(fmt::format("{} bodies: the head-on closed form has the two disks only",
+                            c.bodies.size()));
+  }
+  if (auto why = plain_kelvin_voigt_reason(c); !why.empty()) return none(why);
+  const Vec2 dx = b.position_m - a.position_m;
+  const Vec2 dv = b.velocity_mps - a.velocity_mps;
+  // head on: the relative velocity along the line of centres (cross product
+  // within the rounding of the stated numbers, 1e-12 relative)
+  const double cross = dx.x() * dv.y() - dx.y() * dv.x();
+  if (!(dx.norm() > 0.0) || std::abs(cross) > 1e-12 * dx.norm() * dv.norm()) {
+    return none(
+        "the two disks do not move along the line of their centres: the head-on closed form "
+        "needs a relative velocity parallel to it");
+  }
+  ClosedFormMatch m;
+  m.kind = ClosedFormKind::two_disks_head_on;
+  m.disk = moving[0];
+  m.line = moving[1];
+  m.pair = 0;
+  return m;
+}
+
+// one moving body translating on one fixed half-plane (a disk, or a polygon
+// pressed flat and centred: translating_support), one plain Kelvin-Voigt pair;
+// or two free disks head on
+ClosedFormMatch match_analytic(const Case& c) {
   if (!c.joints.empty()) {
-    return none("the disk-on-line closed form has no joints, the case has revolute joints");
+    return none("the analytic closed forms have no joints, the case has revolute joints");
   }
   std::vector<int> moving;
   for (std::size_t i = 0; i < c.bodies.size(); ++i) {
     if (!c.bodies[i].fixed) moving.push_back(static_cast<int>(i));
   }
+  if (moving.size() == 2) return match_two_disks(c, moving);
   if (moving.size() != 1) {
-    return none(
-        fmt::format("{} moving bodies: the disk-on-line closed form has exactly one "
-                    "(two moving bodies in contact have none here)",
-                    moving.size()));
+    return none(fmt::format(
+        "{} moving bodies: the closed forms have one body on a line or two disks head on",
+        moving.size()));
   }
   const Body& d = body(c, moving[0]);
-  if (!std::holds_alternative<Circle>(d.shape)) {
-    return none(fmt::format("the moving body '{}' is a {}: the closed form needs a circle", d.name,
-                            shape_type_name(d.shape)));
-  }
-  if (!(d.mass_kg > 0.0) || !(std::get<Circle>(d.shape).radius_m > 0.0)) {
-    return none(fmt::format("the disk '{}' needs a positive mass and radius", d.name));
-  }
-  if (c.contacts.size() != 1) {
-    return none(fmt::format("{} contact pairs: the disk-on-line closed form has exactly one",
-                            c.contacts.size()));
-  }
+  if (!(d.mass_kg > 0.0)) return none(fmt::format("the body '{}' needs a mass > 0", d.name));
+  if (auto why = plain_kelvin_voigt_reason(c); !why.empty()) return none(why);
   const ContactPair& p = c.contacts[0];
-  if (!valid_body(c, p.body_a) || !valid_body(c, p.body_b)) {
-    return none(fmt::format("contact pair '{}' names a body that does not exist", p.name));
-  }
   const int other = p.body_a == moving[0] ? p.body_b : p.body_a;
   if ((p.body_a != moving[0] && p.body_b != moving[0]) || other == moving[0]) {
     return none(
-        fmt::format("contact pair '{}' does not join the disk '{}' to the ground", p.name, d.name));
+        fmt::format("contact pair '{}' does not join the body '{}' to the ground", p.name, d.name));
   }
   const Body& l = body(c, other);
   if (!std::holds_alternative<HalfPlane>(l.shape)) {
-    return none(fmt::format("the disk touches '{}', a {}: the closed form needs a half-plane",
+    return none(fmt::format("the body touches '{}', a {}: the closed form needs a half-plane",
                             l.name, shape_type_name(l.shape)));
   }
-  const auto* kv = std::get_if<KelvinVoigt>(&p.law);
-  if (kv == nullptr) {
-    return none(
-        fmt::format("the contact law is {}: only Kelvin-Voigt (linear in delta and "
-                    "delta_dot) has a closed form here",
-                    contact_law_name(p.law)));
-  }
-  if (kv->damping_depth_m > 0.0) {
-    return none("the damping ramp (damping_depth_m > 0) has no closed form");
-  }
-  if (!(kv->stiffness_n_per_m > 0.0) || !(kv->damping_ns_per_m >= 0.0)) {
-    return none("the closed form needs stiffness > 0 and damping >= 0");
-  }
+  const Vec2 n(-std::sin(l.angle_rad), std::cos(l.angle_rad));
+  std::string why;
+  if (!translating_support(d, n, &why)) return none(why);
   ClosedFormMatch m;
-  m.kind = ClosedFormKind::disk_on_line;
+  m.kind = ClosedFormKind::body_on_line;
   m.disk = moving[0];
   m.line = other;
   m.pair = 0;
@@ -140,7 +180,9 @@ ClosedFormMatch match_closed_form(const Case& c) {
     case TruthKind::none:
       return none("the case states truth = none: it has no closed form");
     case TruthKind::analytic:
-      return match_disk_on_line(c);
+      return match_analytic(c);
+    case TruthKind::converged:
+      return none("the case states truth = converged: it has no closed form");
     case TruthKind::analytic_until_first_contact:
       return match_pendulums(c);
   }

@@ -1,6 +1,8 @@
-// Which closed form, if any, is the truth of a case (SPEC §3): the disk on a
-// line (truth = analytic) or pendulums up to their first contact (truth =
-// analytic_until_first_contact). Anything else is unsupported, with the reason.
+// Which closed form, if any, is the truth of a case (SPEC §3), for truth =
+// analytic: a body translating on a line (body_on_line.hpp) or two free disks
+// colliding head on (two_disks_head_on.hpp); for truth =
+// analytic_until_first_contact: pendulums up to their first contact. Anything
+// else is unsupported, with the reason.
 #pragma once
 
 #include <string>
@@ -9,12 +11,13 @@
 
 namespace pb::internal {
 
-enum class ClosedFormKind { none, disk_on_line, pendulums_until_contact };
+enum class ClosedFormKind { none, body_on_line, two_disks_head_on, pendulums_until_contact };
 
 struct ClosedFormMatch {
   ClosedFormKind kind = ClosedFormKind::none;
   std::string reason;  // why there is none; empty otherwise
-  // disk_on_line: the moving disk, the fixed half-plane, their contact pair
+  // body_on_line: the moving body (disk), the fixed half-plane (line), their
+  // contact pair; two_disks_head_on: the two disks (disk, line) and their pair
   int disk = -1;
   int line = -1;
   int pair = -1;

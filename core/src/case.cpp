@@ -37,6 +37,7 @@ const char* truth_kind_name(TruthKind kind) {
     case TruthKind::none: return "none";
     case TruthKind::analytic: return "analytic";
     case TruthKind::analytic_until_first_contact: return "analytic_until_first_contact";
+    case TruthKind::converged: return "converged";
   }
   return "none";
 }

@@ -96,9 +96,10 @@ int read_case_table(const TableReader& t, Case& c) {
   c.gravity_mps2 = t.vec2_or("gravity", Vec2(0.0, -9.8066), Range::any(), "m/s^2");
   const int outline_points = t.integer_or("outline_points", 180, 3, kMaxOutlinePoints);
   const std::string truth =
-      t.word_or("truth", "none", {"analytic", "analytic_until_first_contact", "none"});
+      t.word_or("truth", "none", {"analytic", "analytic_until_first_contact", "converged", "none"});
   c.truth = truth == "analytic"                       ? TruthKind::analytic
             : truth == "analytic_until_first_contact" ? TruthKind::analytic_until_first_contact
+            : truth == "converged"                    ? TruthKind::converged
                                                       : TruthKind::none;
   c.assumptions = t.strings_or_empty("assumptions");
   return outline_points;

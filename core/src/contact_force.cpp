@@ -55,4 +55,26 @@ double contact_force_n(const ContactLaw& law, double delta_m, double delta_dot_m
   return std::max(f, 0.0);
 }
 
+LinearizedLaw linearize_law(const ContactLaw& law, double delta_m, double approach_speed_mps) {
+  LinearizedLaw out;
+  if (!(delta_m > 0.0)) return out;
+  if (const auto* kv = std::get_if<KelvinVoigt>(&law)) {
+    out.stiffness_n_per_m = kv->stiffness_n_per_m;
+    const double ramp =
+        kv->damping_depth_m > 0.0 ? cubic_step(delta_m / kv->damping_depth_m) : 1.0;
+    out.damping_ns_per_m = ramp * kv->damping_ns_per_m;
+  } else if (const auto* hz = std::get_if<Hertz>(&law)) {
+    out.stiffness_n_per_m = hz->stiffness * std::pow(delta_m, hz->exponent - 1.0);
+  } else {
+    const auto& ln = std::get<LankaraniNikravesh>(law);
+    out.stiffness_n_per_m = ln.stiffness * std::pow(delta_m, ln.exponent - 1.0);
+    if (approach_speed_mps > 0.0) {
+      const double e = ln.restitution;
+      out.damping_ns_per_m = out.stiffness_n_per_m * delta_m * 0.75 * (1.0 - e * e) /
+                             approach_speed_mps;
+    }
+  }
+  return out;
+}
+
 }  // namespace pb

@@ -22,4 +22,14 @@ const char* run_status_name(RunStatus s) {
   return "unsupported";
 }
 
+nlohmann::json physics_json(const Physics& p) {
+  return {{"mode", p.mode},
+          {"collision_by", p.collision_by},
+          {"collision", p.collision},
+          {"contact_force_by", p.contact_force_by},
+          {"contact_force", p.contact_force},
+          {"parameters", p.parameters},
+          {"foreknowledge", p.foreknowledge}};
+}
+
 }  // namespace pb

@@ -43,6 +43,7 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
   if (cap.support == Support::unsupported) {
     r.status = RunStatus::unsupported;
     r.reason = cap.reason;
+    r.mapping = {{"physics", physics_json(engine.physics())}};
     return r;
   }
   if (cap.support == Support::mapped) r.reason = cap.reason;
@@ -121,7 +122,11 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
   r.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.mapping = engine.mapping();
+  if (!r.mapping.is_object()) r.mapping = nlohmann::json::object();
+  r.mapping["physics"] = physics_json(engine.physics());
   r.extra = engine.extra_attributes();
+  if (!r.extra.is_object()) r.extra = nlohmann::json::object();
+  r.extra["steps_before_start"] = engine.steps_before_start();
   r.events = engine.episodes();
   r.steps = engine.steps();
   return r;

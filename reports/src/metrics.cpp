@@ -249,6 +249,45 @@ std::vector<MetricValue> self_metrics(const Case& c, const RunResult& run) {
     }
   }
 
+  // free bodies that touch only each other (no joint, no fixed body in any
+  // contact pair): their total momentum changes by gravity alone,
+  // P(t) = P(0) + M g t; the drift is relative to |P(0)| (or, when that is 0,
+  // to sum m |v(0)|)
+  bool closed = c.joints.empty() && !run.bodies.empty();
+  for (const auto& p : c.contacts) {
+    closed = closed && !c.bodies[static_cast<std::size_t>(p.body_a)].fixed &&
+             !c.bodies[static_cast<std::size_t>(p.body_b)].fixed;
+  }
+  if (closed && n > 1) {
+    double total_mass = 0.0;
+    Vec2 p0 = Vec2::Zero();
+    double speed_scale = 0.0;
+    for (const auto& b : run.bodies) {
+      const Body& body = c.bodies[static_cast<std::size_t>(c.body_index(b.name))];
+      total_mass += body.mass_kg;
+      p0 += body.mass_kg * b.velocity_mps.front();
+      speed_scale += body.mass_kg * b.velocity_mps.front().norm();
+    }
+    const double p_scale = p0.norm() > 0.0 ? p0.norm() : speed_scale;  // kg m/s
+    if (p_scale > 0.0) {
+      double worst = 0.0;
+      const double t0 = run.bodies.front().time_s.front();
+      for (std::size_t i = 0; i < n; ++i) {
+        Vec2 p = Vec2::Zero();
+        for (const auto& b : run.bodies) {
+          p += c.bodies[static_cast<std::size_t>(c.body_index(b.name))].mass_kg *
+               b.velocity_mps[i];
+        }
+        const double t = run.bodies.front().time_s[i] - t0;
+        worst = std::max(worst, (p - p0 - total_mass * t * c.gravity_mps2).norm() / p_scale);
+      }
+      auto m = metric(c, run, "self", "momentum_drift", worst, 0.0, false, "1");
+      m.note = p0.norm() > 0.0 ? "max |P(t) - P(0) - M g t| / |P(0)|"
+                               : "max |P(t) - P(0) - M g t| / sum m |v(0)|";
+      out.push_back(m);
+    }
+  }
+
   // revolute joints: anchor on the body against its world pivot
   if (!c.joints.empty()) {
     double worst = 0.0;

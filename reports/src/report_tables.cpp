@@ -132,14 +132,18 @@ Table metrics_table(const std::vector<MetricValue>& metrics,
     const auto it = checked.find(key_of(m));
     if (it != checked.end()) {
       bool passed = true;
+      std::string label = "pass";
       double tightest = std::numeric_limits<double>::infinity();
       for (const auto* o : it->second) {
         passed = passed && o->passed;
         tightest = std::min(tightest, o->limit);
-        if (!o->passed && !o->message.empty()) note += (note.empty() ? "" : "; ") + o->message;
+        if (!o->message.empty()) note += (note.empty() ? "" : "; ") + o->message;
+        if (!o->passed || fails_gate(*o)) label = outcome_label(*o);
+        if (o->threshold.by_construction) note += (note.empty() ? "" : "; ") + std::string("holds by construction");
       }
       limit = format_number(tightest);
-      result = passed ? "pass" : "fail";
+      // a known breach is a failure to show, not a pass (SPEC §5b)
+      result = passed && label == "pass" ? "pass" : label;
     }
     std::vector<std::string> row{m.case_name,
                                  m.engine,
@@ -156,7 +160,7 @@ Table metrics_table(const std::vector<MetricValue>& metrics,
     }
     row.push_back(note);
     t.rows.push_back(std::move(row));
-    t.row_status.push_back(result);
+    t.row_status.push_back(result.empty() || result == "pass" ? result : "fail");
   }
   return t;
 }

@@ -85,7 +85,10 @@ TEST(AnalyticEngine, Interface) {
   EXPECT_TRUE(e->settings().specs().empty());  // a closed form has nothing to set
   EXPECT_EQ(e->supports(testing::falling_ball()).support, Support::native);
   EXPECT_EQ(e->supports(testing::sliding()).support, Support::native);
-  EXPECT_EQ(e->supports(testing::dual_pendulum()).support, Support::native);
+  // the swing in closed form, the impact and after it numerically
+  const Capability pendulums = e->supports(testing::dual_pendulum());
+  EXPECT_EQ(pendulums.support, Support::mapped);
+  EXPECT_NE(pendulums.reason.find("exact geometry"), std::string::npos) << pendulums.reason;
   Case ramp = testing::falling_ball();
   ramp.contacts[0].law = KelvinVoigt{1e4, 10.0, 0.1};
   const Capability cap = e->supports(ramp);
@@ -233,7 +236,7 @@ TEST(AnalyticEngine, FallingBallThroughTheRunner) {
   EXPECT_EQ(r.bodies[0].time_s.size(), static_cast<std::size_t>(c.output_samples()));
   EXPECT_EQ(r.events.size(), 2u);
   EXPECT_EQ(r.steps, 7);  // fall, press, clamp, fly, press, clamp, fly
-  EXPECT_EQ(r.mapping.at("closed_form"), "disk_on_line");
+  EXPECT_EQ(r.mapping.at("closed_form"), "body_on_line");
   EXPECT_FALSE(r.contacts.empty());
 }
 
@@ -287,36 +290,49 @@ TEST(AnalyticEngine, SlidingMatchesIntegrationAndSettles) {
 
 // ---- dual_pendulum -------------------------------------------------------------
 
-// The first contact is the end of the closed form: valid_until_s, one episode
-// with only its onset and approach speed, no contact samples ever.
-TEST(AnalyticEngine, DualPendulumUntilFirstContact) {
+// The first contact is the end of the closed form: up to it one episode with
+// only its onset and approach speed, and no contact samples; after it the
+// converged reference at exact geometry, whose first onset is the closed
+// form's, with its Richardson estimate in the mapping.
+TEST(AnalyticEngine, DualPendulumClosedFormThenConverged) {
   const Case c = testing::dual_pendulum();
   auto e = make_analytic_engine();
   e->build(c, {});
   e->advance_to(0.4);
   EXPECT_TRUE(e->episodes().empty());
   EXPECT_EQ(e->steps(), 1);
-  e->advance_to(c.duration_s);
-  const auto eps = e->episodes();
-  ASSERT_EQ(eps.size(), 1u);
   // K(k) / w0 with the test's own AGM: see pendulums_until_contact_test
   const double d = 0.7071;  // the pivot is the ellipse's tip
   const double w0 = std::sqrt(9.8066 * d / ((0.7071 * 0.7071 + 0.25 * 0.25) / 4.0 + d * d));
   const double k2 = std::pow(std::sin(std::numbers::pi / 8.0), 2);
   const double quarter = testing::complete_elliptic_k_by_agm(k2) / w0;
-  // the engine locates the touch by root finding on the gap: 1e-10 s covers its
-  // stopping tolerance and the ~5e-12 s between the vertical and the touch
-  EXPECT_NEAR(eps[0].onset_time_s, quarter, 1e-10);
+  e->advance_to(quarter - 1e-6);  // just before the touch: still the closed form
+  auto eps = e->episodes();
+  EXPECT_TRUE(eps.empty());
+  e->advance_to(quarter + 1e-9);
+  eps = e->episodes();
+  ASSERT_GE(eps.size(), 1u);
+  // the numerical truth locates the touch by root finding on rk45's dense
+  // output at rtol 1e-10: within 1e-8 s of the closed form's quarter period
+  // (the reference's own threshold on this case is 1e-6 s)
+  EXPECT_NEAR(eps[0].onset_time_s, quarter, 1e-8);
   EXPECT_NEAR(eps[0].approach_speed_mps, 1.78, 0.005);  // SPEC §2, printed digits
-  EXPECT_NEAR(eps[0].onset_time_s, 0.496524, 1e-6);      // issue 2 acceptance figure
-  EXPECT_TRUE(std::isnan(eps[0].offset_time_s));
-  EXPECT_TRUE(std::isnan(eps[0].peak_force_n));
-  EXPECT_TRUE(std::isnan(eps[0].impulse_ns));
-  EXPECT_EQ(e->extra_attributes().at("valid_until_s").get<double>(), eps[0].onset_time_s);
-  EXPECT_EQ(e->steps(), 2);
-  std::vector<ContactSample> contacts;
-  e->contacts(contacts);
-  EXPECT_TRUE(contacts.empty());
+  e->advance_to(c.duration_s);
+  eps = e->episodes();
+  ASSERT_GE(eps.size(), 1u);
+  // through the impact: SPEC §2's figures of the Hertz contact (printed digits)
+  EXPECT_NEAR(eps[0].offset_time_s - eps[0].onset_time_s, 0.24e-3, 0.01e-3);
+  EXPECT_NEAR(eps[0].max_penetration_m, 0.14e-3, 0.01e-3);
+  EXPECT_FALSE(e->extra_attributes().contains("valid_until_s"));
+  const nlohmann::json m = e->mapping();
+  ASSERT_TRUE(m.contains("numerical_truth"));
+  // the hand-over is the closed form's touch, located by root finding on the
+  // gap: 1e-10 s covers its stopping tolerance and the ~5e-12 s between the
+  // vertical and the touch
+  EXPECT_NEAR(m.at("numerical_from_s").get<double>(), quarter, 1e-10);
+  // converged: the estimated error of the truth is far below any engine's
+  // (MuJoCo's and ODE's bands are ~1e-4 m)
+  EXPECT_LT(m.at("numerical_truth").at("convergence").at("estimated_error_m").get<double>(), 1e-7);
   std::printf("dual_pendulum first contact %.17g s, approach speed %.17g m/s\n",
               eps[0].onset_time_s, eps[0].approach_speed_mps);
 }
@@ -360,7 +376,7 @@ TEST(AnalyticEngine, CaseFilesGiveTheSameTruth) {
     const Case loaded = load_case(std::string(PB_CASES_DIR) + "/" + file + ".toml");
     auto a = make_analytic_engine();
     auto b = make_analytic_engine();
-    EXPECT_EQ(a->supports(loaded).support, Support::native)
+    EXPECT_NE(a->supports(loaded).support, Support::unsupported)
         << file << ": " << a->supports(loaded).reason;
     a->build(loaded, {});
     b->build(built, {});
@@ -369,13 +385,21 @@ TEST(AnalyticEngine, CaseFilesGiveTheSameTruth) {
     const auto ea = a->episodes();
     const auto eb = b->episodes();
     ASSERT_EQ(ea.size(), eb.size()) << file;
+    // after the pendulums' first contact the truth is numerical: a change in
+    // the last bits of an input changes rk45's step sequence, so the two agree
+    // to the truth's own accuracy at rtol 1e-10 (its Richardson estimate is
+    // ~1e-9 m; a Hertz peak over 0.24 ms to ~1e-5), not to the last bits
+    const bool numerical = built.truth == TruthKind::analytic_until_first_contact;
     for (std::size_t i = 0; i < ea.size(); ++i) {
-      EXPECT_NEAR(ea[i].onset_time_s, eb[i].onset_time_s, 1e-15) << file;
-      EXPECT_NEAR(ea[i].approach_speed_mps, eb[i].approach_speed_mps, 1e-14) << file;
+      EXPECT_NEAR(ea[i].onset_time_s, eb[i].onset_time_s, numerical ? 1e-8 : 1e-15) << file;
+      EXPECT_NEAR(ea[i].approach_speed_mps, eb[i].approach_speed_mps, numerical ? 1e-8 : 1e-14)
+          << file;
       if (!std::isnan(eb[i].peak_force_n)) {
         // the peak is a golden-section search (~1e-12 relative): a rounding in its
         // start moves the result by up to that
-        EXPECT_NEAR(ea[i].peak_force_n, eb[i].peak_force_n, 1e-12 * eb[i].peak_force_n) << file;
+        EXPECT_NEAR(ea[i].peak_force_n, eb[i].peak_force_n,
+                    (numerical ? 1e-4 : 1e-12) * eb[i].peak_force_n)
+            << file;
       }
     }
     std::vector<BodyState> sa;
@@ -384,8 +408,9 @@ TEST(AnalyticEngine, CaseFilesGiveTheSameTruth) {
     b->body_states(sb);
     ASSERT_EQ(sa.size(), sb.size()) << file;
     for (std::size_t i = 0; i < sa.size(); ++i) {
-      // deg -> rad rounding (1e-16 rad) grown over the run's O(10 m) motion: 1e-13 m
-      EXPECT_LE((sa[i].position_m - sb[i].position_m).norm(), 1e-13) << file;
+      // deg -> rad rounding (1e-16 rad) grown over the run's O(10 m) motion:
+      // 1e-13 m; the numerical truth to its accuracy, 1e-8 m (above)
+      EXPECT_LE((sa[i].position_m - sb[i].position_m).norm(), numerical ? 1e-8 : 1e-13) << file;
     }
   }
 }

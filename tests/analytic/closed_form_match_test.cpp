@@ -16,12 +16,12 @@ namespace {
 
 TEST(ClosedFormMatch, CanonicalCases) {
   const ClosedFormMatch fb = match_closed_form(testing::falling_ball());
-  EXPECT_EQ(fb.kind, ClosedFormKind::disk_on_line);
+  EXPECT_EQ(fb.kind, ClosedFormKind::body_on_line);
   EXPECT_EQ(fb.disk, 1);
   EXPECT_EQ(fb.line, 0);
   EXPECT_EQ(fb.pair, 0);
   EXPECT_TRUE(fb.reason.empty());
-  EXPECT_EQ(match_closed_form(testing::sliding()).kind, ClosedFormKind::disk_on_line);
+  EXPECT_EQ(match_closed_form(testing::sliding()).kind, ClosedFormKind::body_on_line);
   EXPECT_EQ(match_closed_form(testing::dual_pendulum()).kind,
             ClosedFormKind::pendulums_until_contact);
 }
@@ -50,11 +50,16 @@ TEST(ClosedFormMatch, ReasonsForNone) {
   second.name = "second";
   second.position_m = Vec2(5.0, 5.0);
   c.bodies.push_back(second);
-  EXPECT_TRUE(mentions(reason(c), "2 moving bodies"));
+  EXPECT_TRUE(mentions(reason(c), "the two disks only"));  // 3 bodies: not the head-on form
 
   c = testing::falling_ball();
   c.bodies[1].shape = Polygon{{Vec2(-0.5, -0.5), Vec2(0.5, -0.5), Vec2(0.0, 0.5)}};
-  EXPECT_TRUE(mentions(reason(c), "needs a circle"));
+  // on the 30 deg incline a corner lands first, beside the centre of mass
+  EXPECT_TRUE(mentions(reason(c), "would turn it"));
+
+  c = testing::falling_ball();
+  c.bodies[1].shape = Ellipse{0.5, 0.3};
+  EXPECT_TRUE(mentions(reason(c), "needs a circle or a polygon"));
 
   c = testing::falling_ball();
   c.bodies[0].shape = Ellipse{2.0, 1.0};
@@ -79,6 +84,39 @@ TEST(ClosedFormMatch, ReasonsForNone) {
   c = testing::dual_pendulum();
   c.bodies[1].fixed = true;
   EXPECT_TRUE(mentions(reason(c), "holds the fixed body"));
+
+  c = testing::falling_ball();
+  c.truth = TruthKind::converged;
+  EXPECT_TRUE(mentions(reason(c), "truth = converged"));
+}
+
+// Two free disks moving along the line of their centres have the head-on
+// closed form; an oblique approach does not.
+TEST(ClosedFormMatch, TwoDisksHeadOn) {
+  Case c;
+  c.truth = TruthKind::analytic;
+  c.gravity_mps2 = Vec2::Zero();
+  auto disk = [](const char* name, double x, double v) {
+    Body d;
+    d.name = name;
+    d.shape = Circle{0.2};
+    d.mass_kg = 1.0;
+    d.position_m = Vec2(x, 0.0);
+    d.velocity_mps = Vec2(v, 0.0);
+    return d;
+  };
+  c.bodies = {disk("a", -0.5, 2.0), disk("b", 0.5, -0.5)};
+  ContactPair p;
+  p.name = "ab";
+  p.body_a = 0;
+  p.body_b = 1;
+  p.law = KelvinVoigt{1e4, 10.0, 0.0};
+  c.contacts = {p};
+  const ClosedFormMatch m = match_closed_form(c);
+  EXPECT_EQ(m.kind, ClosedFormKind::two_disks_head_on) << m.reason;
+  c.bodies[1].velocity_mps = Vec2(-0.5, 0.1);
+  EXPECT_EQ(match_closed_form(c).kind, ClosedFormKind::none);
+  EXPECT_TRUE(mentions(match_closed_form(c).reason, "line of their centres"));
 }
 
 }  // namespace

@@ -83,10 +83,14 @@ inline Case dual_pendulum() {
   je.name = "ellipse_pivot";
   je.body = 0;
   je.anchor_world_m = Vec2::Zero();
+  // the pivot in the body frame, as the case loader derives it at t = 0:
+  // R(-theta0) (anchor - position), the ellipse's tip (a, 0)
+  je.anchor_local_m = Vec2(0.7071, 0.0);
   RevoluteJoint jd;
   jd.name = "disk_pivot";
   jd.body = 1;
   jd.anchor_world_m = Vec2(0.75, 0.0);
+  jd.anchor_local_m = Vec2(0.0, 0.7071);
   c.joints = {je, jd};
   ContactPair p;
   p.name = "ellipse_disk";

@@ -258,8 +258,10 @@ TEST(ResolveCases, AllGivesEveryCaseFileSorted) {
   const auto paths = resolve_cases("all", kCasesDir);
   std::vector<std::string> names;
   for (const auto& p : paths) names.push_back(p.stem().string());
-  EXPECT_EQ(names, (std::vector<std::string>{"dual_pendulum", "falling_ball", "falling_ball_paper",
-                                             "sliding", "sliding_paper"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"concave_arch", "dual_pendulum", "ellipse_incline",
+                                             "falling_ball", "falling_ball_paper", "head_on",
+                                             "incline_launch", "pendulum_wall", "sliding",
+                                             "sliding_paper", "square_landing"}));
 }
 
 // tests/data/cases/dir holds two cases and one TOML file without [case]
@@ -284,7 +286,9 @@ TEST(ResolveCases, UnknownNameListsTheCases) {
   } catch (const InputError& e) {
     const std::string msg = e.what();
     EXPECT_EQ(e.field(), "slidng");
-    EXPECT_NE(msg.find("dual_pendulum, falling_ball, falling_ball_paper, sliding, sliding_paper"),
+    EXPECT_NE(msg.find("concave_arch, dual_pendulum, ellipse_incline, falling_ball, falling_ball_paper, "
+                     "head_on, incline_launch, pendulum_wall, sliding, sliding_paper, "
+                     "square_landing"),
               std::string::npos)
         << msg;
     EXPECT_NE(msg.find("did you mean 'sliding'?"), std::string::npos) << msg;
@@ -479,7 +483,7 @@ TEST(BadInput, UnknownWordWithDidYouMean) {
                      20, "contacts[0].law", "did you mean 'kelvin_voigt'?");
   EXPECT_INPUT_ERROR(error_of(with("duration = 1.0", "duration = 1.0\ntruth = \"exact\"")),
                      "t.toml", 4, "case.truth",
-                     "must be one of \"analytic\", \"analytic_until_first_contact\", \"none\"");
+                     "must be one of \"analytic\", \"analytic_until_first_contact\", \"converged\", \"none\"");
 }
 
 TEST(BadInput, DuplicateNames) {

@@ -61,5 +61,40 @@ TEST(ContactForce, HertzStiffnessOfThePendulumSteel) {
   EXPECT_NEAR(hertz_stiffness(m), 1.024e10, 0.0005e10);  // SPEC's printed digits: half a unit
 }
 
+// linearize_law: the linear spring-damper k delta + c delta_dot that gives
+// the law's own force (contact_force_n, a separate evaluation of eqs. 1-7) at
+// that delta, for any rate; the tolerance is a few roundings of forces of
+// up to ~2e4 N (relative 1e-14).
+TEST(LinearizeLaw, ReproducesTheLawAtThisPenetration) {
+  const ContactLaw laws[] = {KelvinVoigt{1e4, 10.0, 0.0}, KelvinVoigt{1e4, 10.0, 0.1},
+                             Hertz{2e6, 1.5, std::nullopt},
+                             LankaraniNikravesh{1.0242e10, 1.5, 0.7, std::nullopt}};
+  const double approach = 1.78;  // m/s
+  for (const ContactLaw& law : laws) {
+    for (const double delta : {1e-6, 1e-4, 0.03, 0.2}) {
+      for (const double rate : {-1.5, 0.0, 0.7, 1.78}) {
+        const LinearizedLaw lin = linearize_law(law, delta, approach);
+        const double unclamped = lin.stiffness_n_per_m * delta + lin.damping_ns_per_m * rate;
+        const double law_force = contact_force_n(law, delta, rate, approach);
+        if (law_force > 0.0) {
+          EXPECT_NEAR(unclamped, law_force, 1e-14 * std::abs(law_force) + 1e-300)
+              << contact_law_name(law) << " delta " << delta << " rate " << rate;
+        } else {
+          EXPECT_LE(unclamped, 0.0);  // where the law clamps, the linear one pulls
+        }
+      }
+    }
+  }
+  // nothing pressed in: nothing to spring
+  const LinearizedLaw none = linearize_law(KelvinVoigt{1e4, 10.0, 0.0}, 0.0, approach);
+  EXPECT_EQ(none.stiffness_n_per_m, 0.0);
+  EXPECT_EQ(none.damping_ns_per_m, 0.0);
+  // Lankarani-Nikravesh without a latched approach speed has no damping term
+  const LinearizedLaw elastic =
+      linearize_law(LankaraniNikravesh{2e6, 1.5, 0.8, std::nullopt}, 1e-3, 0.0);
+  EXPECT_EQ(elastic.damping_ns_per_m, 0.0);
+  EXPECT_DOUBLE_EQ(elastic.stiffness_n_per_m * 1e-3, 2e6 * std::pow(1e-3, 1.5));
+}
+
 }  // namespace
 }  // namespace pb

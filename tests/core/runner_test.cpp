@@ -22,6 +22,7 @@ class FreeFallEngine final : public Engine {
   explicit FreeFallEngine(double nan_after_s = 1e9) : nan_after_s_(nan_after_s) {}
   std::string name() const override { return "freefall"; }
   std::string version() const override { return "test"; }
+  Physics physics() const override { return Physics{"test", "test", "", "test", "", "", false}; }
   Capability supports(const Case&) const override { return {Support::native, ""}; }
   const SettingsBinder& settings() const override { return binder_; }
   void build(const Case& c, const SettingsOverrides&) override { c_ = &c; }

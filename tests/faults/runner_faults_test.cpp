@@ -30,6 +30,7 @@ class ScriptedEngine final : public Engine {
 
   std::string name() const override { return "scripted"; }
   std::string version() const override { return "test"; }
+  Physics physics() const override { return Physics{"test", "test", "", "test", "", "", false}; }
   Capability supports(const Case&) const override { return {Support::native, ""}; }
   const SettingsBinder& settings() const override { return binder_; }
   void build(const Case& c, const SettingsOverrides&) override { bodies_ = c.bodies.size(); }

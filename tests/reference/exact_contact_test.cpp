@@ -119,6 +119,34 @@ TEST(ExactContact, PolygonCircleAndPolygonLine) {
   expect_consistent(g);
 }
 
+TEST(ExactContact, FaceOnLineActsAtItsDepthWeightedMiddle) {
+  // SPEC §1, one force per pair: a square pressed 0.01 m flat into the line
+  // pushes at its face's middle (no moment about its centre); tilted so that
+  // its bottom corners sit 0.03 and 0.01 m deep, at their depth-weighted
+  // centroid, 3/4 of the way to the deeper corner (worked out by hand)
+  const Polygon sq{{Vec2(-0.1, -0.1), Vec2(0.1, -0.1), Vec2(0.1, 0.1), Vec2(-0.1, 0.1)}};
+  const ExactContact pl(HalfPlane{}, sq);
+  const ContactGeometry flat = pl.evaluate(Pose{}, Pose{Vec2(0.3, 0.09), 0.0});
+  EXPECT_NEAR(flat.gap_m, -0.01, 1e-15);
+  EXPECT_NEAR(flat.point_b_m.x(), 0.3, 1e-15);
+  EXPECT_NEAR(flat.point_b_m.y(), -0.01, 1e-15);
+  expect_consistent(flat);
+  // turned by a with sin a = 0.1: the corners' heights differ by 0.2 sin a
+  // = 0.02; the centre at height h puts them at h - 0.1 (cos a + sin a) and
+  // h - 0.1 (cos a - sin a)
+  const double a = std::asin(0.1);
+  const double h = 0.1 * (std::cos(a) + 0.1) - 0.03;
+  const ContactGeometry tilt = pl.evaluate(Pose{}, Pose{Vec2(0, h), a});
+  EXPECT_NEAR(tilt.gap_m, -0.03, 1e-15);
+  const Vec2 right = Pose{Vec2(0, h), a}.to_world(Vec2(0.1, -0.1));  // 0.01 deep
+  const Vec2 left = Pose{Vec2(0, h), a}.to_world(Vec2(-0.1, -0.1));  // 0.03 deep
+  const Vec2 expect = (0.03 * left + 0.01 * right) / 0.04;
+  // depths 0.03, 0.01 m rounded through a sine, 1e-15 m each: 1e-14 m
+  EXPECT_NEAR(tilt.point_b_m.x(), expect.x(), 1e-14);
+  EXPECT_NEAR(tilt.point_b_m.y(), expect.y(), 1e-14);
+  expect_consistent(tilt);
+}
+
 TEST(ExactContact, SupportedPairs) {
   EXPECT_TRUE(ExactContact::supported(HalfPlane{}, Circle{1}));
   EXPECT_TRUE(ExactContact::supported(Circle{1}, Ellipse{1, 2}));

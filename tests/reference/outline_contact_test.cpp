@@ -164,19 +164,50 @@ TEST(OutlineContact, CornerIntoEdgePenetration) {
   expect_consistent(g);
 }
 
-TEST(OutlineContact, TwoOverlapRegionsTheDeeperWins) {
+// whether p lies inside the L of l_shape(): the union of its two rectangles
+bool inside_l(const Vec2& p) {
+  return (p.x() > 0 && p.x() < 3 && p.y() > 0 && p.y() < 1) ||
+         (p.x() > 0 && p.x() < 1 && p.y() > 0 && p.y() < 3);
+}
+
+TEST(OutlineContact, TwoOverlapRegionsShareTheLineOfAction) {
   // a 64-point circle centred (1.4, 1.45), radius 0.5, overlaps the L's edge
   // y = 1 by 0.05 and its edge x = 1 by 0.1, in two separate regions (the
-  // corner (1, 1) is 0.6 from the centre, outside the circle). delta is the
-  // deeper one, the normal pushes the circle along +x, and the line of action
-  // is the centroid of the points in that region (symmetric about y = 1.45).
+  // corner (1, 1) is 0.6 from the centre, outside the circle). delta and the
+  // normal are the deeper region's (the circle pushed along +x); the line of
+  // action passes through the depth-weighted centroid of the circle's points
+  // inside the L in both regions (SPEC §1, one force per pair), worked out
+  // here with the L as two rectangles and each depth as the least distance to
+  // the L's six edges (segment_distance2 with a point for the first segment).
   const Points c = circle_points(Vec2(1.4, 1.45), 0.5, 64);
-  const ContactGeometry g = contact(l_shape(), c);
+  const Points l = l_shape();
+  double w = 0.0;
+  Vec2 wp = Vec2::Zero();
+  int regions_hit = 0;
+  bool below = false, left = false;
+  for (const Vec2& p : c) {
+    if (!inside_l(p)) continue;
+    double d2 = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < l.size(); ++i) {
+      d2 = std::min(d2, segment_distance2(p, p, l[i], l[(i + 1) % l.size()]));
+    }
+    w += std::sqrt(d2);
+    wp += std::sqrt(d2) * p;
+    below = below || p.y() < 1.0;
+    left = left || p.x() < 1.0;
+  }
+  regions_hit = (below ? 1 : 0) + (left ? 1 : 0);
+  ASSERT_EQ(regions_hit, 2);
+  const ContactGeometry g = contact(l, c);
   EXPECT_NEAR(g.gap_m, -0.1, kTol);  // the point at 180 deg, (0.9, 1.45)
   EXPECT_NEAR(g.normal.x(), 1.0, 1e-15);
-  EXPECT_NEAR(g.point_b_m.y(), 1.45, 1e-12);  // a centroid of ~10 rounded points: 1e-12 m
-  EXPECT_LT(g.point_b_m.x(), 1.0);
-  EXPECT_GT(g.point_b_m.x(), 0.9);
+  // a centroid of ~14 rounded points, each depth from a different formula
+  // here than in the search: 1e-12 m
+  EXPECT_NEAR(g.point_b_m.x(), wp.x() / w, 1e-12);
+  EXPECT_NEAR(g.point_b_m.y(), wp.y() / w, 1e-12);
+  // both regions pull the point: it lies off the deeper region's symmetry
+  // line y = 1.45, towards the shallower region below it
+  EXPECT_LT(g.point_b_m.y(), 1.45 - 1e-3);
   expect_consistent(g);
 }
 

@@ -127,7 +127,10 @@ struct ContactPair {
 enum class TruthKind {
   none,                          // no ground truth: compare against the reference
   analytic,                      // closed form over the whole run
-  analytic_until_first_contact,  // closed form up to the first contact onset
+  // closed form up to the first contact onset, then the converged reference
+  // at exact geometry (SPEC §3)
+  analytic_until_first_contact,
+  converged,                     // no closed form: the converged reference at exact geometry
 };
 
 [[nodiscard]] const char* truth_kind_name(TruthKind kind);

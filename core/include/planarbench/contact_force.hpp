@@ -18,6 +18,22 @@ namespace pb {
 [[nodiscard]] double contact_force_n(const ContactLaw& law, double delta_m, double delta_dot_mps,
                                      double approach_speed_mps);
 
+// A law at one instant as a linear spring-damper: the stiffness k and damping
+// c with k delta + c delta_dot = the law's unclamped force at (delta,
+// delta_dot), for engines whose contact is a linear spring-damper that may be
+// set anew each step (MuJoCo's solref, ODE's ERP/CFM):
+//   Kelvin-Voigt (eq. 1)        k = K, c = c (times the ramp's cubic step at delta)
+//   Hertz (eq. 2)               k = K delta^(n-1) (the secant), c = 0
+//   Lankarani-Nikravesh (eq. 7) k = K delta^(n-1), c = K delta^n 3 (1 - e^2) / 4 / approach
+// (the damping coefficient of eq. 7 at this delta; 0 before an approach speed
+// is latched). delta <= 0 gives k = c = 0.
+struct LinearizedLaw {
+  double stiffness_n_per_m = 0.0;  // N/m
+  double damping_ns_per_m = 0.0;   // N s/m
+};
+[[nodiscard]] LinearizedLaw linearize_law(const ContactLaw& law, double delta_m,
+                                          double approach_speed_mps);
+
 // The cubic step of MSC ADAMS IMPACT: 0 at x <= 0, 1 at x >= 1,
 // 3x^2 - 2x^3 between (smooth in value and slope).
 [[nodiscard]] double cubic_step(double x);

@@ -59,6 +59,22 @@ struct Capability {
   std::string reason;  // why mapped or unsupported; empty for native
 };
 
+// Whose physics produced a run (SPEC §5b): whose collision detection found the
+// contacts and whose contact model turned them into forces, and whether any
+// parameter was calibrated with knowledge of the run's future. Every run's
+// mapping carries it as "physics"; `list` and the report show it.
+struct Physics {
+  std::string mode;              // the engine's mode setting, e.g. "native", "oracle", "inject"
+  std::string collision_by;      // "engine", "adapter", "reference" or "closed form"
+  std::string collision;         // one line: what finds the contacts
+  std::string contact_force_by;  // "engine", "adapter (case law)", "reference (case law)", "closed form"
+  std::string contact_force;     // one line: what makes the force
+  std::string parameters;        // one line: how the law's parameters are set
+  bool foreknowledge = false;    // a parameter comes from a probe or look-ahead run
+};
+
+[[nodiscard]] nlohmann::json physics_json(const Physics& p);
+
 class Engine {
  public:
   Engine() = default;
@@ -100,6 +116,13 @@ class Engine {
   // how the case's contact law was expressed in this engine and what could
   // not be expressed (SPEC §5 `mapping`)
   [[nodiscard]] virtual nlohmann::json mapping() const = 0;
+  // whose collision and contact model run with the current settings (before
+  // or after build; cheap)
+  [[nodiscard]] virtual Physics physics() const = 0;
+  // steps the engine's own integrator took during build, before t = 0 (a
+  // probe or look-ahead run); 0 for every default mode (SPEC §5b)
+  [[nodiscard]] virtual long steps_before_start() const { return 0; }
+
   // extra attributes for the results file (e.g. "valid_until_s")
   [[nodiscard]] virtual nlohmann::json extra_attributes() const { return nlohmann::json::object(); }
 };

@@ -66,17 +66,29 @@ ContactGeometry halfplane_polygon(const Pose& plane, const WorldOutline& poly, c
   const Vec2 origin = body.to_local(plane.position_m);
   int lowest = 0;
   double h_min = std::numeric_limits<double>::infinity();
+  int below = 0;              // vertices under the line
+  double depth_sum = 0.0;     // m
+  Vec2 moment = Vec2::Zero(); // m^2, sum of depth x vertex (polygon frame)
   for (int i = 0; i < poly.size(); ++i) {
     const double h = nl.x() * (poly.x[i] - origin.x()) + nl.y() * (poly.y[i] - origin.y());
     if (h < h_min) {
       h_min = h;
       lowest = i;
     }
+    if (h < 0.0) {
+      ++below;
+      depth_sum -= h;
+      moment -= h * Vec2(poly.x[i], poly.y[i]);
+    }
   }
   ContactGeometry g;
   g.gap_m = h_min;
   g.normal = n;
-  g.point_b_m = body.to_world(Vec2(poly.x[lowest], poly.y[lowest]));
+  // SPEC §1, one force per pair: pressed in at several vertices (a face on
+  // the line), the force acts at their depth-weighted centroid, which moves
+  // continuously as vertices cross the line; with one vertex, at that vertex
+  g.point_b_m = below > 1 ? body.to_world(moment / depth_sum)
+                          : body.to_world(Vec2(poly.x[lowest], poly.y[lowest]));
   g.point_a_m = g.point_b_m - h_min * n;
   return g;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <utility>
 
 #include "outline_kernels.hpp"
@@ -74,6 +75,7 @@ FastOutlineContactSearch::Body::Body(std::vector<Vec2> outline_m) : tree(std::mo
   status_stamp.assign(n, 0);
   hit_stamp.assign(n, 0);
   walk_stamp.assign(n, 0);
+  inside_walked.assign(n, 0);
   inside.assign(n, 0);
   hit.assign(n, BoundaryHit{});
   near_stamp.assign(n, 0);
@@ -96,6 +98,7 @@ void FastOutlineContactSearch::begin(Body& body, const Pose& pose) {
   body.position_m = pose.position_m;
   body.touched_count = 0;
   body.near_count = 0;
+  body.inside_walked_count = 0;
 }
 
 void FastOutlineContactSearch::place_vertex(Body& body, int i) {
@@ -507,6 +510,7 @@ void FastOutlineContactSearch::walk_run(Body& own, int start, Body& other, int& 
   const int n = own.size();
   auto visit = [&](int v, int guess_edge) {
     own.walk_stamp[static_cast<std::size_t>(v)] = stamp_;
+    own.inside_walked[static_cast<std::size_t>(own.inside_walked_count++)] = v;
     ++work_.inside_points;
     const BoundaryHit& h = exact_hit(own, v, other, guess_edge);
     if (deepest < 0) {
@@ -644,9 +648,10 @@ ContactGeometry FastOutlineContactSearch::evaluate(const Pose& pose_a, const Pos
   ContactGeometry g = a_deepest ? geometry_of(a_, deepest_a, b_, true, true)
                                 : geometry_of(b_, deepest_b, a_, false, true);
   const double delta = -g.gap_m;
-  // line of action through the centroid of the longer run of inside points
+  // line of action through the depth-weighted centroid of the inside points
+  // of the body that has more of them (every one was walked by classify)
   auto run_of = [&](Body& body, int start) {
-    return internal::inside_run(
+    internal::Run r = internal::inside_run(
         body.size(), start,
         [&](int i) {
           const auto k = static_cast<std::size_t>(i);
@@ -657,6 +662,18 @@ ContactGeometry FastOutlineContactSearch::evaluate(const Pose& pose_a, const Pos
           const auto k = static_cast<std::size_t>(i);
           return Vec2(body.x[k], body.y[k]);
         });
+    if (r.first < 0 || body.inside_walked_count == r.run_points) return r;
+    const auto walked = std::span<int>(body.inside_walked.data(),
+                                       static_cast<std::size_t>(body.inside_walked_count));
+    std::sort(walked.begin(), walked.end());
+    internal::add_other_inside(
+        r, body.size(), walked,
+        [&](int i) { return body.hit[static_cast<std::size_t>(i)].distance_m; },
+        [&](int i) {
+          const auto k = static_cast<std::size_t>(i);
+          return Vec2(body.x[k], body.y[k]);
+        });
+    return r;
   };
   const internal::Run run_a = run_of(a_, deepest_a);
   const internal::Run run_b = run_of(b_, deepest_b);

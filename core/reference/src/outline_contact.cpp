@@ -80,6 +80,22 @@ internal::Run inside_run(const WorldOutline& own, const std::vector<BoundaryHit>
       [&](int i) { return Vec2(own.x[i], own.y[i]); });
 }
 
+// every inside point of `own`: the run around `start`, then the other overlap
+// regions (outline_kernels.hpp, add_other_inside)
+internal::Run all_inside(const WorldOutline& own, const std::vector<BoundaryHit>& hits, int start,
+                         std::vector<int>& ids) {
+  internal::Run r = inside_run(own, hits, start);
+  if (r.first < 0) return r;
+  ids.clear();
+  for (int i = 0; i < own.size(); ++i) {
+    if (hits[static_cast<std::size_t>(i)].inside) ids.push_back(i);
+  }
+  internal::add_other_inside(
+      r, own.size(), ids, [&](int i) { return hits[static_cast<std::size_t>(i)].distance_m; },
+      [&](int i) { return Vec2(own.x[i], own.y[i]); });
+  return r;
+}
+
 }  // namespace
 
 std::vector<Vec2> contact_outline(const Shape& shape, int n) {
@@ -192,9 +208,10 @@ ContactGeometry OutlineContactSearch::evaluate_placed(const WorldOutline& a,
   const bool a_deepest = deepest_a.hit.distance_m >= deepest_b.hit.distance_m;
   ContactGeometry g = candidate_geometry(a_deepest ? deepest_a : deepest_b, a, b, true);
   const double delta = -g.gap_m;
-  // line of action through the centroid of the longer run of inside points
-  const internal::Run run_a = inside_run(a, hits_a_, deepest_a.vertex);
-  const internal::Run run_b = inside_run(b, hits_b_, deepest_b.vertex);
+  // line of action through the depth-weighted centroid of the inside points
+  // of the body that has more of them
+  const internal::Run run_a = all_inside(a, hits_a_, deepest_a.vertex, inside_ids_);
+  const internal::Run run_b = all_inside(b, hits_b_, deepest_b.vertex, inside_ids_);
   const bool use_a = run_a.points > run_b.points || (run_a.points == run_b.points && a_deepest);
   if (use_a) {
     g.point_a_m = run_a.centroid_m;

@@ -122,10 +122,15 @@ template <class EdgeOf>
 }
 
 // the run of consecutive inside points around one of them: how many, and
-// their depth-weighted centroid
+// their depth-weighted centroid; add_other_inside() then adds the body's
+// inside points of its other overlap regions (a concave body)
 struct Run {
-  int points = 0;
-  Vec2 centroid_m = Vec2::Zero();
+  int points = 0;                  // inside points summed (the run, then the others)
+  Vec2 centroid_m = Vec2::Zero();  // m, world, depth-weighted centroid of those points
+  int first = -1;                  // index of the run's first point in forward order
+  int run_points = 0;              // points of the run around its start
+  double w_sum = 0.0;              // m, sum of the depths
+  Vec2 p_sum = Vec2::Zero();       // m^2, sum of depth x point
 };
 
 // The run around `start` (an inside point, or -1 for none) of an outline of n
@@ -156,8 +161,36 @@ template <class Inside, class Depth, class Point>
     if (!inside(i)) break;
     add(i);
   }
+  r.first = (start - (back - 1) + n) % n;
+  r.run_points = r.points;
+  r.w_sum = w_sum;
+  r.p_sum = p_sum;
   r.centroid_m = w_sum > 0.0 ? Vec2(p_sum / w_sum) : point_m(start);
   return r;
+}
+
+// SPEC §1, one force per pair: the line of action passes through the
+// depth-weighted centroid of every inside point of the body, not only of the
+// run around the deepest one. A concave body pressed in at several places
+// (an arch on both feet) would otherwise take the whole force at one of them,
+// turn, press the other deeper, switch, and chatter without end. The other
+// points are added after the run's, in increasing index order (`inside_ascending`:
+// the body's inside point indices, ascending), so that a single overlap region
+// keeps the run's sum bit for bit and both searches add in the same order.
+template <class Indices, class Depth, class Point>
+void add_other_inside(Run& r, int n, const Indices& inside_ascending, Depth&& depth_m,
+                      Point&& point_m) {
+  if (r.first < 0) return;
+  bool added = false;
+  for (const int i : inside_ascending) {
+    if ((i - r.first + n) % n < r.run_points) continue;  // in the run already
+    const double w = depth_m(i);
+    r.w_sum += w;
+    r.p_sum += w * point_m(i);
+    ++r.points;
+    added = true;
+  }
+  if (added && r.w_sum > 0.0) r.centroid_m = r.p_sum / r.w_sum;
 }
 
 }  // namespace pb::internal

@@ -105,6 +105,22 @@ class ReferenceEngine final : public Engine {
     return m;
   }
 
+  [[nodiscard]] Physics physics() const override {
+    Physics p;
+    p.mode = settings_.geometry;
+    p.collision_by = "reference";
+    p.collision = settings_.geometry == "exact"
+                      ? "the exact shapes (circle, ellipse, polygon, line) in closed form"
+                      : "the paper's outline search (§2.1.1): the closest outline points refined "
+                        "on their neighbours, penetration from the points inside the other body";
+    p.contact_force_by = "reference (case law)";
+    p.contact_force =
+        "the case's law (paper eqs. 1-7), one force per pair at the depth-weighted contact point, "
+        "integrated with located contact events";
+    p.parameters = "the case's law as stated";
+    return p;
+  }
+
   [[nodiscard]] nlohmann::json extra_attributes() const override {
     nlohmann::json x = nlohmann::json::object();
     if (!solver_) return x;

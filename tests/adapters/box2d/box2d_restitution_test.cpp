@@ -12,40 +12,6 @@
 namespace pb::internal::box2d {
 namespace {
 
-// A free body hit at its centre along any normal responds with its mass; hit
-// off-centre, with 1/m + (r x n)^2 / I (Featherstone §11; the textbook
-// collision of a free rigid body). A fixed body adds nothing.
-TEST(Box2dRestitution, EffectiveMassOfFreeBodies) {
-  const BodyInertia ground{true, 0.0, 0.0, Vec2::Zero(), false, Vec2::Zero()};
-  const BodyInertia disk{false, 2.0, 0.25, Vec2(1.0, 1.0), false, Vec2::Zero()};
-  const Vec2 n(0.0, 1.0);
-  EXPECT_DOUBLE_EQ(effective_mass_kg(ground, disk, Vec2(1.0, 0.5), n), 2.0);
-  // off centre by 0.3 m across the normal: 1 / (1/2 + 0.09/0.25) = 1/0.86
-  // 1e-15 kg: rounding of 0.3^2 / 0.25 and the reciprocals (size 1)
-  EXPECT_NEAR(effective_mass_kg(ground, disk, Vec2(1.3, 0.5), n), 1.0 / 0.86, 1e-15);
-  // two free bodies in series: 1 / (1/m1 + 1/m2)
-  const BodyInertia other{false, 3.0, 0.5, Vec2(1.0, 2.0), false, Vec2::Zero()};
-  EXPECT_NEAR(effective_mass_kg(disk, other, Vec2(1.0, 1.5), n), 1.0 / (0.5 + 1.0 / 3.0), 1e-15);
-}
-
-// A body pinned at q turns about q only: an impulse along n at p meets the
-// inertia about the pivot divided by the squared lever, (I + m d^2) / ((p - q) x n)^2.
-// Dual pendulum at its first contact: both levers 0.7071 m, horizontal normal.
-TEST(Box2dRestitution, EffectiveMassOfPendulums) {
-  const double a = 0.7071;
-  const double b = 0.25;
-  const BodyInertia ellipse{false, 1.0, (a * a + b * b) / 4.0, Vec2(0.0, -a), true, Vec2::Zero()};
-  const BodyInertia disk{false, 1.0, 0.125, Vec2(0.75, -0.7071), true, Vec2(0.75, 0.0)};
-  const Vec2 p(0.25, -0.7071);
-  const Vec2 n(1.0, 0.0);
-  const double inv_e = 0.7071 * 0.7071 / ((a * a + b * b) / 4.0 + a * a);
-  const double inv_d = 0.7071 * 0.7071 / (0.125 + 0.7071 * 0.7071);
-  // 1e-14 kg: the same sums evaluated in another order (a few eps of ~0.6)
-  EXPECT_NEAR(effective_mass_kg(ellipse, disk, p, n), 1.0 / (inv_e + inv_d), 1e-14);
-  // pushing along the rod (through the pivot) meets an infinite mass
-  EXPECT_EQ(inverse_effective_mass(disk, Vec2(0.75, -1.2071), Vec2(0.0, 1.0)), 0.0);
-}
-
 // Kelvin-Voigt maps to the clamped oscillator's restitution, which depends on
 // m_eff through zeta: the formula is written out again in the test header;
 // 1e-12 covers the different evaluation order.

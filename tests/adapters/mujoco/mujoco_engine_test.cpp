@@ -395,12 +395,22 @@ TEST(MujocoEngine, VersionAndMappingAreReported) {
   EXPECT_EQ(e->name(), "mujoco");
   EXPECT_EQ(e->version().rfind("2.2.2", 0), 0u) << e->version();
   e->build(test::dual_pendulum(0.1), {});
+  // native: the rule, no number from the future
   const nlohmann::json m = e->mapping();
   const nlohmann::json& p = m.at("pairs").at(0);
   EXPECT_EQ(p.at("law"), "lankarani_nikravesh");
-  EXPECT_LT(p.at("solref")[0].get<double>(), 0.0);
-  EXPECT_GT(p.at("effective_mass_kg").get<double>(), 0.0);
+  EXPECT_NE(p.at("solref_rule").get<std::string>().find("m_set"), std::string::npos);
+  EXPECT_FALSE(p.contains("solref"));
   EXPECT_FALSE(m.at("not_expressed").empty());
+  EXPECT_EQ(e->steps_before_start(), 0);
+  EXPECT_FALSE(e->physics().foreknowledge);
+  // oracle: the numbers calibrated on the probe run, and the probe's steps
+  e->build(test::dual_pendulum(0.1), given({{"mujoco.mode", "oracle"}}));
+  const nlohmann::json o = e->mapping().at("pairs").at(0);
+  EXPECT_LT(o.at("solref")[0].get<double>(), 0.0);
+  EXPECT_GT(o.at("effective_mass_kg").get<double>(), 0.0);
+  EXPECT_GT(e->steps_before_start(), 0);
+  EXPECT_TRUE(e->physics().foreknowledge);
 }
 
 // ---- acceptance on the real cases (cases/*.toml) ---------------------------------

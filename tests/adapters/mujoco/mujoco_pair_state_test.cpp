@@ -165,7 +165,10 @@ TEST(PairState, FlatPolygonTouchesWithItsTwoLowestVerticesOnly) {
   // relative rounding of 6e-8 on coordinates of 0.2 m
   EXPECT_NEAR(obs[0].penetration_m, 0.002, 2e-8);
   EXPECT_NEAR(obs[0].normal_ab.y(), 1.0, 1e-15);
-  EXPECT_NEAR(std::abs(obs[0].point_m.x()), 0.2, 2e-8);
+  // both corners pressed in alike: the pair's point is their depth-weighted
+  // centroid, the face's middle (SPEC §1), to the float rounding above
+  EXPECT_EQ(obs[0].pressed, 2);
+  EXPECT_NEAR(obs[0].point_m.x(), 0.0, 2e-8);
 }
 
 TEST(PairState, EllipseDiskNormalPointsFromAToB) {

@@ -36,9 +36,12 @@ TEST(Probe, FallingDiskTouchesAtTheFreeFallTime) {
   Case c = test::disk_drop(H);
   c.bodies[0].mass_kg = 2.5;
   const Probe p(c);
-  const auto touch = probe_first_touch(p.model.get(), c, p.layout, 1.0);
+  long steps = -1;
+  const auto touch = probe_first_touch(p.model.get(), c, p.layout, 1.0, steps);
   ASSERT_TRUE(touch[0].found);
   const double h = 1e-4;  // the model's step
+  // the probe is a look-ahead run: it stepped up to the touch (oracle mode only)
+  EXPECT_EQ(steps, std::lround(touch[0].time_s / h));
   const double t_star = std::sqrt(2.0 * H / test::kG);
   // the first state at or past the touch: within one step; semi-implicit
   // Euler's positions lead the exact ones by g h t / 2 (< one step of travel)
@@ -55,7 +58,8 @@ TEST(Probe, FallingDiskTouchesAtTheFreeFallTime) {
 TEST(Probe, PairTouchingAtStartIsFoundAtZero) {
   const Case c = test::sliding();
   const Probe p(c);
-  const auto touch = probe_first_touch(p.model.get(), c, p.layout, 1.0);
+  long steps = -1;
+  const auto touch = probe_first_touch(p.model.get(), c, p.layout, 1.0, steps);
   ASSERT_TRUE(touch[0].found);
   EXPECT_EQ(touch[0].time_s, 0.0);
   EXPECT_NEAR(touch[0].approach_speed_mps, 0.0, 1e-12);
@@ -64,7 +68,8 @@ TEST(Probe, PairTouchingAtStartIsFoundAtZero) {
 TEST(Probe, PairThatNeverTouchesIsNotFound) {
   const Case c = test::disk_drop(5.0);  // needs 1.01 s to fall 5 m
   const Probe p(c);
-  const auto touch = probe_first_touch(p.model.get(), c, p.layout, 0.5);
+  long steps = -1;
+  const auto touch = probe_first_touch(p.model.get(), c, p.layout, 0.5, steps);
   EXPECT_FALSE(touch[0].found);
 }
 

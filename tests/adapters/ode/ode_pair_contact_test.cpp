@@ -49,8 +49,8 @@ TEST(OdePairContact, NormalFollowsThePairOrder) {
     EXPECT_NEAR(pc.point_m.y(), -0.025, 1e-12);
     EXPECT_NEAR(pc.approach_speed_mps, 2.0, 1e-12);
     // the ODE contact: g1 has a body and the normal points into it
-    EXPECT_EQ(dGeomGetBody(pc.geom.g1), world.body(1));
-    EXPECT_NEAR(pc.geom.normal[1], 1.0, 1e-15);
+    EXPECT_EQ(dGeomGetBody(pc.geoms[0].g1), world.body(1));
+    EXPECT_NEAR(pc.geoms[0].normal[1], 1.0, 1e-15);
   }
 }
 
@@ -120,26 +120,36 @@ TEST(OdePairContact, SphereConvexDepthMatchesThePolygon) {
   EXPECT_GT(checked, 50);
 }
 
-// An ellipse turned 30 deg, centre 0.4 m above the ground: its lowest
-// outline vertex (found here from the outline itself) is below the ground.
-// The prism reports that vertex on both of its faces (z = -w and +w); the
-// pair keeps one contact: depth = -(lowest y), the point midway between the
-// vertex and the ground surface above it, normal up. A rotation error would
-// move the vertex to the other side of the centre. 1e-12 m: rounding of the
-// rotated vertex (computed here and by ODE from the same outline); 1e-15 on
-// the plane's unit normal.
-TEST(OdePairContact, RotatedEllipseOnGroundKeepsTheDeepestVertex) {
+// An ellipse turned 30 deg, centre 0.4 m above the ground: several of its
+// outline vertices are below the ground (found here from the outline
+// itself). The prism reports each on both of its faces (z = -w and +w); the
+// pair's contact (SPEC §1) has the deepest vertex's depth, the normal up, and
+// the depth-weighted centroid of the contacts' points, each midway between a
+// vertex and the ground surface above it (both faces weigh alike). A
+// rotation error would move the vertices to the other side of the centre.
+// 1e-12 m: rounding of the rotated vertices (computed here and by ODE from the
+// same outline); 1e-15 on the plane's unit normal.
+TEST(OdePairContact, RotatedEllipseOnGroundActsAtItsDepthWeightedVertices) {
   const double angle = kPi / 6.0;
   const Vec2 centre(1.0, 0.4);
   const auto local = make_outline(Ellipse{0.7071, 0.25}, 180);
   Vec2 lowest(0.0, 1e300);
+  double weight = 0.0;
+  Vec2 moment = Vec2::Zero();
+  int below = 0;
   for (const Vec2& q : local) {
     const Vec2 w(centre.x() + std::cos(angle) * q.x() - std::sin(angle) * q.y(),
                  centre.y() + std::sin(angle) * q.x() + std::cos(angle) * q.y());
     if (w.y() < lowest.y()) lowest = w;
+    if (w.y() < 0.0) {
+      weight -= w.y();
+      moment -= w.y() * Vec2(w.x(), 0.5 * w.y());
+      ++below;
+    }
   }
   ASSERT_LT(lowest.y(), 0.0);
   ASSERT_LT(lowest.x(), centre.x());  // a CCW turn puts the low end on the left
+  ASSERT_GE(below, 2);                // several vertices: the centroid is not the deepest
   Case c;
   c.bodies = {ground_body(), ellipse_body("ellipse", 0.7071, 0.25, 1.0, centre, angle)};
   c.contacts = {pair(0, 1, kKv)};
@@ -148,10 +158,11 @@ TEST(OdePairContact, RotatedEllipseOnGroundKeepsTheDeepestVertex) {
   std::vector<PairContact> out;
   collider.collide(out);
   ASSERT_TRUE(out[0].touching);
-  EXPECT_GE(out[0].contacts_reported, 2);
+  EXPECT_EQ(out[0].count, 2 * below);  // each vertex on both faces of the prism
   EXPECT_NEAR(out[0].depth_m, -lowest.y(), 1e-12);
-  EXPECT_NEAR(out[0].point_m.x(), lowest.x(), 1e-12);
-  EXPECT_NEAR(out[0].point_m.y(), 0.5 * lowest.y(), 1e-12);
+  EXPECT_NEAR(out[0].depth_sum_m, 2.0 * weight, 1e-12);
+  EXPECT_NEAR(out[0].point_m.x(), moment.x() / weight, 1e-12);
+  EXPECT_NEAR(out[0].point_m.y(), moment.y() / weight, 1e-12);
   EXPECT_NEAR(out[0].normal_ab.y(), 1.0, 1e-15);
 }
 

@@ -21,10 +21,13 @@ namespace {
 TEST(OdeProbe, FirstTouchOfAFallingBall) {
   const Case c = ode_test::kelvin_voigt_drop(1.5, 1.0);
   const double h = 1e-4;
-  const auto touches = probe_first_touches(c, h);
+  long steps = -1;
+  const auto touches = probe_first_touches(c, h, steps);
   ASSERT_EQ(touches.size(), 1u);
   const FirstTouch& t = touches[0];
   ASSERT_TRUE(t.found);
+  // a look-ahead run (oracle mode only): it stepped up to the touch
+  EXPECT_EQ(steps, std::lround(t.time_s / h));
   const double g = 9.8066;
   const double t_exact = std::sqrt(2.0 * 1.5 / g);
   EXPECT_NEAR(t.time_s, t_exact, 2.0 * h);
@@ -37,8 +40,10 @@ TEST(OdeProbe, FirstTouchOfAFallingBall) {
 // No pair can touch within the duration: nothing found
 TEST(OdeProbe, NoTouch) {
   const Case c = ode_test::kelvin_voigt_drop(1.5, 0.1);
-  const auto touches = probe_first_touches(c, 1e-4);
+  long steps = -1;
+  const auto touches = probe_first_touches(c, 1e-4, steps);
   EXPECT_FALSE(touches[0].found);
+  EXPECT_EQ(steps, 1000);  // the whole 0.1 s
 }
 
 }  // namespace

@@ -20,6 +20,14 @@ struct Threshold {
   double atol = 0.0;
   double rtol = 0.0;
   std::string why;       // the bound the tolerance comes from
+  // non-empty: the engine's own model cannot meet this band, for the stated
+  // reason (its mapping says so before the run); the check expects a breach,
+  // shows it as a failure, and does not fail the gate on it; a pass then
+  // fails the gate ("unexpected pass": the reason no longer holds)
+  std::string known_breach;
+  // the tolerance holds by construction (e.g. a joint that is a generalized
+  // coordinate), not by a numerical bound; the report labels it so
+  bool by_construction = false;
   int line = 0;          // in the thresholds file
 };
 
@@ -31,9 +39,15 @@ struct CheckOutcome {
   Threshold threshold;
   MetricValue value;     // value.metric empty when no such metric was computed
   double limit = 0.0;    // atol + rtol |desired|
-  bool passed = false;
+  bool passed = false;   // the band holds
   std::string message;   // why it failed
 };
+
+// whether an outcome fails the gate: a breach that is not a known one, or a
+// known breach that passed
+[[nodiscard]] bool fails_gate(const CheckOutcome& o);
+// "pass", "fail", "known breach" or "unexpected pass"
+[[nodiscard]] const char* outcome_label(const CheckOutcome& o);
 
 // Every threshold against the metrics; a threshold that matches no metric
 // fails ("not computed": a gate never passes silently).

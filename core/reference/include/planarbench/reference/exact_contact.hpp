@@ -8,7 +8,10 @@
 //   half-plane - circle   gap = n.(c - p0) - R, n the line's outward normal
 //   half-plane - ellipse  the ellipse's support point in -n (its deepest or
 //                         closest point): (a^2 u_x, b^2 u_y) / sqrt(a^2 u_x^2 + b^2 u_y^2)
-//   half-plane - polygon  the polygon's lowest vertex above the line
+//   half-plane - polygon  the polygon's lowest vertex gives the gap; pressed
+//                         in at several vertices, the force acts at their
+//                         depth-weighted centroid (SPEC §1: a face flat on
+//                         the line is one contact, at its middle)
 //   circle - circle       gap = |c_b - c_a| - R_a - R_b
 //   ellipse - circle      signed distance from the circle's centre to the
 //                         ellipse (Eberly, ellipse_distance.hpp) minus R

@@ -112,6 +112,9 @@ class FastOutlineContactSearch {
     std::vector<std::uint64_t> status_stamp, hit_stamp, walk_stamp;
     std::vector<unsigned char> inside;
     std::vector<BoundaryHit> hit;
+    // the inside points walked this evaluation, in walk order
+    std::vector<int> inside_walked;
+    int inside_walked_count = 0;
     // per edge: within the margin of the other outline
     std::vector<std::uint64_t> near_stamp;
     std::vector<int> near_edges;

@@ -28,25 +28,32 @@
 //   point of either body inside the other; the normal is that of the deepest
 //   point's nearest boundary feature (below).
 // * Contact points when overlapping. The force acts at the depth-weighted
-//   centroid p = sum(d_i p_i) / sum(d_i) of a run of consecutive outline points
-//   inside the other body (d_i their depths), and at p -/+ delta n on the
-//   other body, so that the pair lies on one line of action along n. The run
-//   is the one around each body's deepest inside point that holds more points
+//   centroid p = sum(d_i p_i) / sum(d_i) of the outline points of one body
+//   inside the other (d_i their depths), and at p -/+ delta n on the other
+//   body, so that the pair lies on one line of action along n (SPEC §1, one
+//   force per pair). The body is the one with more points inside the other
 //   (ties: the body of the deepest point overall); with a single point inside,
-//   p is the deepest point itself. Why not the deepest point always: when two
-//   neighbouring outline points are equally deep (a polygon edge flat on a
-//   line, e.g. the 180-point disk of the sliding case, whose contact normal
-//   falls between two points), the force jumps from one to the other, each
-//   jump turns the polygon so that the other gets deeper, and the switching
-//   accelerates without bound (Zeno chatter; rk45 steps fell to 1e-9 s). The
-//   weighted centroid moves continuously (points enter and leave a run with
-//   zero weight), and the longer run is the better sampled side of the overlap
-//   (a sparse ground outline's single point under a flat chord ties in depth
-//   with the disk's points and would otherwise steal the line of action).
-// * Several overlapping regions (concave bodies): one contact per pair, at the
-//   deepest point over all regions; the other regions carry no force. delta is
-//   continuous in time, the contact point and normal jump when another region
-//   becomes the deepest.
+//   p is the deepest point itself. The sum runs first over the run of
+//   consecutive inside points around that body's deepest point, then over its
+//   other inside points in index order (other overlap regions of a concave
+//   body), so a single region's sum is always taken in the same order. Why not
+//   the deepest point always: when two neighbouring outline points are equally
+//   deep (a polygon edge flat on a line, e.g. the 180-point disk of the
+//   sliding case, whose contact normal falls between two points), the force
+//   jumps from one to the other, each jump turns the polygon so that the other
+//   gets deeper, and the switching accelerates without bound (Zeno chatter;
+//   rk45 steps fell to 1e-9 s). The same happens between the regions of a
+//   concave body pressed in at several places (an arch on both feet) when only
+//   one region carries the force. The weighted centroid moves continuously
+//   (points enter and leave with zero weight), and the body with more points
+//   inside is the better sampled side of the overlap (a sparse ground
+//   outline's single point under a flat chord ties in depth with the disk's
+//   points and would otherwise steal the line of action).
+// * Several overlapping regions (concave bodies): one contact per pair; delta
+//   and the normal are those of the deepest point over all regions, the point
+//   of action the weighted centroid over all of them (above). delta is
+//   continuous in time; the normal jumps when another region becomes the
+//   deepest.
 // * Limits. Every overlap region bounded by two edge crossings holds an outline
 //   point of one body inside the other, so shallow contact is always seen. A
 //   deep crossing without any outline point inside (two thin bars crossed like
@@ -112,6 +119,7 @@ class OutlineContactSearch {
   WorldOutline world_b_;
   std::vector<BoundaryHit> hits_a_;  // outline point i of a against b's boundary
   std::vector<BoundaryHit> hits_b_;
+  std::vector<int> inside_ids_;  // scratch: inside point indices of one body
 };
 
 // The paper's two stages taken literally, for comparison only: the closest

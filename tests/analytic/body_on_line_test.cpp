@@ -1,12 +1,14 @@
-// Tests for core/analytic/disk_on_line.cpp
-#include "disk_on_line.hpp"
+// Tests for core/analytic/body_on_line.cpp
+#include "body_on_line.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "independent_integrators.hpp"
+#include "planarbench/errors.hpp"
 
 namespace pb::internal {
 namespace {
@@ -65,9 +67,9 @@ testing::DiskLineProblem problem_of(const Case& c) {
 
 // Body states and contact samples against the independent x-y integration
 // (RK4, h = 2e-6 s, located switches) every 5 ms.
-TEST(DiskOnLine, TiltedLineMatchesIndependentIntegration) {
+TEST(BodyOnLine, TiltedLineMatchesIndependentIntegration) {
   const Case c = tilted_case(false);
-  DiskOnLine d(c, 1, 0, 0);
+  BodyOnLine d(c, 1, 0, 0);
   d.extend_to(c.duration_s);
   testing::DiskLineIntegrator ref(problem_of(c), 2e-6);
   std::vector<BodyState> states;
@@ -114,9 +116,9 @@ TEST(DiskOnLine, TiltedLineMatchesIndependentIntegration) {
 }
 
 // With the disk as body_a, the normal points from the disk into the ground.
-TEST(DiskOnLine, NormalFollowsThePairOrder) {
+TEST(BodyOnLine, NormalFollowsThePairOrder) {
   const Case c = tilted_case(true);
-  DiskOnLine d(c, 1, 0, 0);
+  BodyOnLine d(c, 1, 0, 0);
   d.extend_to(c.duration_s);
   const auto eps = d.episodes(c.duration_s);
   ASSERT_FALSE(eps.empty());
@@ -135,7 +137,7 @@ TEST(DiskOnLine, NormalFollowsThePairOrder) {
 // The sliding case's "touching" start: the centre R n is one ulp off, the
 // computed gap is rounding (~1e-17 m) and counts as zero: the contact starts
 // at t = 0. A real gap of 1 nm does not.
-TEST(DiskOnLine, RoundingOfATouchingStartIsZero) {
+TEST(BodyOnLine, RoundingOfATouchingStartIsZero) {
   Case c = tilted_case(false);
   const double r = 0.25;
   c.bodies[0].position_m = Vec2::Zero();
@@ -144,24 +146,24 @@ TEST(DiskOnLine, RoundingOfATouchingStartIsZero) {
   c.bodies[1].velocity_mps = Vec2::Zero();
   const double s = r * std::sin(std::numbers::pi / 4.0);
   c.bodies[1].position_m = Vec2(std::nextafter(s, 1.0), s);
-  DiskOnLine touching(c, 1, 0, 0);
+  BodyOnLine touching(c, 1, 0, 0);
   EXPECT_EQ(touching.normal_motion().params().gap0_m, 0.0);
   EXPECT_EQ(touching.normal_motion().phases()[0].kind, NormalPhaseKind::pressed);
 
   const Vec2 n(std::sqrt(0.5), std::sqrt(0.5));
   c.bodies[1].position_m = (r + 1e-9) * n;
-  DiskOnLine apart(c, 1, 0, 0);
+  BodyOnLine apart(c, 1, 0, 0);
   // |c| - r with |c| ~ 0.25 m: rounding ~3e-17 m, well under the 1e-9 m gap
   EXPECT_NEAR(apart.normal_motion().params().gap0_m, 1e-9, 1e-16);
   EXPECT_EQ(apart.normal_motion().phases()[0].kind, NormalPhaseKind::separated);
 }
 
 // The mapping states the closed form and its parameters.
-TEST(DiskOnLine, MappingDescribesTheClosedForm) {
+TEST(BodyOnLine, MappingDescribesTheClosedForm) {
   const Case c = tilted_case(false);
-  DiskOnLine d(c, 1, 0, 0);
+  BodyOnLine d(c, 1, 0, 0);
   const nlohmann::json j = d.mapping();
-  EXPECT_EQ(j.at("closed_form"), "disk_on_line");
+  EXPECT_EQ(j.at("closed_form"), "body_on_line");
   EXPECT_EQ(j.at("law"), "kelvin_voigt");
   EXPECT_DOUBLE_EQ(j.at("damping_ratio").get<double>(), 30.0 / (2.0 * std::sqrt(2e4 * 2.0)));
   // static penetration m |g.n| / K
@@ -172,9 +174,9 @@ TEST(DiskOnLine, MappingDescribesTheClosedForm) {
 }
 
 // phases_begun counts the phases of the normal motion started so far.
-TEST(DiskOnLine, PhasesBegun) {
+TEST(BodyOnLine, PhasesBegun) {
   const Case c = tilted_case(false);
-  DiskOnLine d(c, 1, 0, 0);
+  BodyOnLine d(c, 1, 0, 0);
   d.extend_to(c.duration_s);
   EXPECT_EQ(d.phases_begun(0.0), 1);
   const auto& ph = d.normal_motion().phases();
@@ -182,6 +184,125 @@ TEST(DiskOnLine, PhasesBegun) {
   EXPECT_EQ(d.phases_begun(ph[1].start_s), 2);
   EXPECT_EQ(d.phases_begun(c.duration_s),
             static_cast<long>(d.normal_motion().phase_index_at(1.5) + 1));
+}
+
+// square_landing.toml's square (side 0.2 m, 1.5 kg) turned by `angle`,
+// released from rest above a horizontal line (or `line_angle`)
+Case square_case(double angle, double line_angle, double spin) {
+  Case c;
+  c.name = "square";
+  c.truth = TruthKind::analytic;
+  c.duration_s = 1.2;
+  Body ground;
+  ground.name = "ground";
+  ground.shape = HalfPlane{};
+  ground.fixed = true;
+  ground.angle_rad = line_angle;
+  Body sq;
+  sq.name = "square";
+  sq.shape = Polygon{{Vec2(-0.1, -0.1), Vec2(0.1, -0.1), Vec2(0.1, 0.1), Vec2(-0.1, 0.1)}};
+  sq.mass_kg = 1.5;
+  sq.inertia_kgm2 = 0.01;
+  sq.angle_rad = angle;
+  sq.angular_velocity_radps = spin;
+  // the centre 0.6 m above the line along its normal: the face 0.5 m above
+  const Vec2 n(-std::sin(line_angle), std::cos(line_angle));
+  sq.position_m = 0.6 * n;
+  c.bodies = {ground, sq};
+  ContactPair p;
+  p.name = "pair";
+  p.body_a = 0;
+  p.body_b = 1;
+  p.law = KelvinVoigt{1e4, 10.0, 0.0};
+  c.contacts = {p};
+  return c;
+}
+
+// A square landing flat moves like a disk of radius half its side: the same
+// independent integration (a disk of radius 0.1 m) every 5 ms, and it never
+// turns; its contact point is the face's middle.
+TEST(BodyOnLine, SquareLandingFlatIsATranslatingFace) {
+  const double line_angle = -0.3;  // not aligned with the world axes
+  const Case c = square_case(line_angle, line_angle, 0.0);
+  std::string why;
+  const Vec2 n(-std::sin(line_angle), std::cos(line_angle));
+  const auto support = translating_support(c.bodies[1], n, &why);
+  ASSERT_TRUE(support.has_value()) << why;
+  // the face at 0.1 m from the centre, the top face 0.2 m above it (a few
+  // roundings of a rotated coordinate: 1e-15 m)
+  EXPECT_NEAR(support->support_m, 0.1, 1e-15);
+  EXPECT_NEAR(support->clearance_m, 0.2, 1e-15);
+  EXPECT_EQ(support->face_vertices, 2);
+  BodyOnLine d(c, 1, 0, 0);
+  d.extend_to(c.duration_s);
+  testing::DiskLineProblem p;
+  p.mass_kg = 1.5;
+  p.radius_m = 0.1;
+  p.line_normal = n;
+  p.position0_m = c.bodies[1].position_m;
+  testing::DiskLineIntegrator ref(p, 2e-6);
+  std::vector<BodyState> states;
+  std::vector<ContactSample> contacts;
+  int contact_samples = 0;
+  for (int k = 0; k <= 240; ++k) {
+    const double t = 0.005 * k;
+    ref.advance_to(t);
+    d.body_states(t, states);
+    // as for the disk above: 1e-9 relative to the motion's scales
+    EXPECT_LE((states[1].position_m - ref.position()).norm(), 1e-9) << "t=" << t;
+    EXPECT_LE((states[1].velocity_mps - ref.velocity()).norm(), 1e-9) << "t=" << t;
+    EXPECT_EQ(states[1].angle_rad, line_angle);
+    EXPECT_EQ(states[1].angular_velocity_radps, 0.0);
+    d.contacts(t, contacts);
+    if (ref.penetration() > 1e-9) {
+      ASSERT_EQ(contacts.size(), 1u);
+      ++contact_samples;
+      // the face's middle: the centre minus the support, and its projection
+      const Vec2 middle = ref.position() - 0.1 * n;
+      EXPECT_LE((contacts[0].point_m - (middle + 0.5 * ref.penetration() * n)).norm(), 1e-9);
+    }
+  }
+  EXPECT_GT(contact_samples, 3);
+  EXPECT_EQ(d.mapping().at("shape"), "polygon");
+}
+
+// Where the closed form does not hold, it says why: a tilted square lands on
+// a corner beside its centre; a spinning square's lowest point moves; an L
+// on its long face has the face's middle beside its centre of mass.
+TEST(BodyOnLine, RefusesBodiesThatWouldTurn) {
+  std::string why;
+  const Vec2 up(0, 1);
+  EXPECT_FALSE(translating_support(square_case(0.1, 0.0, 0.0).bodies[1], up, &why).has_value());
+  EXPECT_NE(why.find("beside its centre of mass"), std::string::npos) << why;
+  EXPECT_FALSE(translating_support(square_case(0.0, 0.0, 2.0).bodies[1], up, &why).has_value());
+  EXPECT_NE(why.find("spins"), std::string::npos) << why;
+  Body l;
+  l.name = "l";
+  // the L [0,3] x [0,1] u [0,1] x [0,3] about its centroid (7/6, 7/6)
+  const Vec2 g(7.0 / 6.0, 7.0 / 6.0);
+  l.shape = Polygon{{Vec2(0, 0) - g, Vec2(3, 0) - g, Vec2(3, 1) - g, Vec2(1, 1) - g,
+                     Vec2(1, 3) - g, Vec2(0, 3) - g}};
+  EXPECT_FALSE(translating_support(l, up, &why).has_value());
+  // a diamond on its tip: one lowest vertex straight below the centre
+  Body diamond;
+  diamond.name = "diamond";
+  diamond.shape = Polygon{{Vec2(0, -1), Vec2(1, 0), Vec2(0, 1), Vec2(-1, 0)}};
+  const auto tip = translating_support(diamond, up, &why);
+  ASSERT_TRUE(tip.has_value()) << why;
+  EXPECT_EQ(tip->face_vertices, 1);
+}
+
+// A penetration deeper than the next vertex level is not this closed form:
+// a flat triangle's apex 1 cm above its base, dropped hard
+TEST(BodyOnLine, StopsWhereAnotherVertexWouldTouch) {
+  Case c = square_case(0.0, 0.0, 0.0);
+  // base (-0.1, -0.004)..(0.1, -0.004), apex (0, 0.008): centroid at the origin
+  c.bodies[1].shape = Polygon{{Vec2(-0.1, -0.004), Vec2(0.1, -0.004), Vec2(0.0, 0.008)}};
+  c.bodies[1].velocity_mps = Vec2(0, -20.0);  // ~0.2 m into a 1e4 N/m spring
+  std::string why;
+  ASSERT_TRUE(translating_support(c.bodies[1], Vec2(0, 1), &why).has_value()) << why;
+  BodyOnLine d(c, 1, 0, 0);
+  EXPECT_THROW(d.extend_to(c.duration_s), EngineError);
 }
 
 }  // namespace
