@@ -22,6 +22,19 @@ double cross(const Vec2& a, const Vec2& b) {
   return a.x() * b.y() - a.y() * b.x();
 }
 
+// the piece without its straight vertices (a turn of exactly zero, e.g. the
+// polygon's own points along one edge): the same region, strictly convex
+ConvexPiece without_straight_vertices(const ConvexPiece& piece) {
+  ConvexPiece out;
+  const std::size_t n = piece.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& prev = piece[(i + n - 1) % n];
+    const Vec2& next = piece[(i + 1) % n];
+    if (cross(piece[i] - prev, next - piece[i]) != 0.0) out.push_back(piece[i]);
+  }
+  return out.size() >= 3 ? out : piece;
+}
+
 // a convex piece of more than max_vertices points cut by diagonals from its
 // first point: fans of max_vertices points sharing their end points
 void split_piece(const ConvexPiece& piece, int max_vertices, std::vector<ConvexPiece>& out) {
@@ -94,7 +107,9 @@ ConvexDecomposition convex_pieces(const std::vector<Vec2>& polygon_ccw, int max_
                 : "CGAL::approx_convex_partition_2 (Hertel-Mehlhorn, at most 4x the fewest)",
         convex.size());
   }
-  for (const ConvexPiece& piece : convex) split_piece(piece, max_vertices, out.pieces);
+  for (const ConvexPiece& piece : convex) {
+    split_piece(without_straight_vertices(piece), max_vertices, out.pieces);
+  }
   if (out.pieces.size() != convex.size()) {
     out.method += fmt::format(", cut into {} pieces of at most {} points", out.pieces.size(),
                               max_vertices);

@@ -26,14 +26,17 @@ struct ConvexDecomposition {
 [[nodiscard]] bool is_convex_ccw(const std::vector<Vec2>& polygon, double rel_tol = 1e-12);
 
 // polygons up to this many points get CGAL's optimal partition (fewest
-// pieces, O(n^4)); larger ones its approximation
+// pieces, O(n^4)); larger ones its approximation. Measured on random star
+// polygons (Release, 2-core Debian 12 machine): 3 ms at 32 points, 22 ms at
+// 64; O(n^4) puts 128 at ~0.35 s, where the approximation takes 0.6 ms.
 inline constexpr int kOptimalPartitionMaxVertices = 64;
 
 // Convex pieces of a simple counter-clockwise polygon (as the case loader
 // validates it: no self-intersection, no repeated points). A convex polygon
 // is one piece, itself. A non-convex one is partitioned by CGAL into convex
 // pieces whose points are the polygon's own (the partition adds diagonals
-// only): CGAL::optimal_convex_partition_2 (Greene's dynamic programming,
+// only; points where a piece runs straight on are dropped from it):
+// CGAL::optimal_convex_partition_2 (Greene's dynamic programming,
 // fewest pieces) for at most kOptimalPartitionMaxVertices points, else
 // CGAL::approx_convex_partition_2 (Hertel-Mehlhorn, at most 4 times the
 // fewest). max_vertices > 0: a piece with more points is split further by
