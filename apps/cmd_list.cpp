@@ -37,6 +37,20 @@ int run_list(const ListOptions& opt) {
     fmt::print("  {:<10} {}\n", name, engines.back()->version());
   }
 
+  // SPEC §5b: whose collision and whose contact force each engine runs by
+  // default, and the modes that differ
+  fmt::print("\nWhose physics (each engine's default mode):\n");
+  for (const auto& e : engines) {
+    const Physics p = e->physics();
+    fmt::print("  {:<10} mode {}: collision by {}, contact force by {}{}\n", e->name(), p.mode,
+               p.collision_by, p.contact_force_by,
+               p.foreknowledge ? " (FOREKNOWLEDGE: calibrated on the run's future)" : "");
+    fmt::print("  {:<10}   parameters: {}\n", "", p.parameters);
+  }
+  fmt::print(
+      "  other modes (--set ENGINE.mode=...): mujoco, ode: oracle (calibrated on a probe run of "
+      "the case: foreknowledge), inject (the case's law applied by the adapter); box2d: inject\n");
+
   fmt::print("\nSupport (native | mapped | unsupported):\n  {:<22}", "case");
   for (const auto& e : engines) fmt::print(" {:<12}", e->name());
   fmt::print("\n");

@@ -56,26 +56,41 @@ namespace {
 
 // Wall seconds per simulated second of each shipped case on each engine at
 // its default settings, measured with `planarbench run --case all --engine
-// all` (the runs' wall_time_s; Release, Debian 12, 2 cores, 2026-11-21,
-// fast detection). The spread is a factor 50 and does not follow the engine
-// alone: ODE's automatic substeps make dual_pendulum (9 per step) and
-// sliding_paper (14) its two costliest runs, and its other runs its cheapest.
+// all --jobs 1` (the runs' wall_time_s; Release, Debian 12, 2 cores,
+// 2026-11-25). The spread is a factor 50 and does not follow the engine
+// alone: dual_pendulum runs every engine at the case's 1e-5 s step (Box2D,
+// ODE, MuJoCo its three costliest runs), the reference's outline search is
+// costliest on sustained face contact (incline_launch), Box2D on a
+// 30-piece ellipse.
 struct MeasuredCost {
   const char* case_name;
   const char* engine;
   double wall_s_per_sim_s;
 };
 constexpr MeasuredCost kMeasured[] = {
-    {"dual_pendulum", "ode", 0.26},         {"sliding_paper", "ode", 0.18},
-    {"sliding_paper", "reference", 0.07},   {"dual_pendulum", "box2d", 0.065},
-    {"sliding", "reference", 0.05},         {"sliding", "mujoco", 0.03},
-    {"sliding_paper", "mujoco", 0.03},      {"sliding_paper", "box2d", 0.03},
-    {"dual_pendulum", "mujoco", 0.025},     {"falling_ball", "mujoco", 0.02},
-    {"falling_ball_paper", "mujoco", 0.02}, {"falling_ball_paper", "box2d", 0.02},
-    {"sliding", "box2d", 0.02},             {"falling_ball", "box2d", 0.016},
-    {"falling_ball", "ode", 0.012},         {"falling_ball_paper", "ode", 0.012},
-    {"sliding", "ode", 0.01},               {"falling_ball", "reference", 0.008},
-    {"falling_ball_paper", "reference", 0.008}, {"dual_pendulum", "reference", 0.005},
+    {"dual_pendulum", "box2d", 0.92},          {"dual_pendulum", "ode", 0.55},
+    {"incline_launch", "reference", 0.35},     {"ellipse_incline", "box2d", 0.35},
+    {"dual_pendulum", "mujoco", 0.27},         {"sliding_paper", "reference", 0.11},
+    {"head_on", "reference", 0.11},            {"sliding", "reference", 0.08},
+    {"ellipse_incline", "ode", 0.08},          {"incline_launch", "mujoco", 0.067},
+    {"sliding_paper", "mujoco", 0.063},        {"ellipse_incline", "reference", 0.059},
+    {"sliding", "mujoco", 0.056},              {"incline_launch", "ode", 0.055},
+    {"head_on", "mujoco", 0.051},              {"concave_arch", "box2d", 0.047},
+    {"concave_arch", "mujoco", 0.043},         {"sliding_paper", "box2d", 0.04},
+    {"incline_launch", "box2d", 0.04},         {"sliding_paper", "ode", 0.038},
+    {"sliding", "ode", 0.036},                 {"head_on", "ode", 0.034},
+    {"square_landing", "mujoco", 0.034},       {"ellipse_incline", "mujoco", 0.032},
+    {"sliding", "box2d", 0.03},                {"pendulum_wall", "box2d", 0.029},
+    {"pendulum_wall", "ode", 0.028},           {"falling_ball_paper", "box2d", 0.028},
+    {"pendulum_wall", "mujoco", 0.027},        {"concave_arch", "ode", 0.027},
+    {"falling_ball", "box2d", 0.026},          {"falling_ball_paper", "mujoco", 0.025},
+    {"square_landing", "box2d", 0.024},        {"falling_ball", "mujoco", 0.024},
+    {"falling_ball", "ode", 0.023},            {"concave_arch", "reference", 0.023},
+    {"falling_ball_paper", "ode", 0.023},      {"square_landing", "ode", 0.022},
+    {"head_on", "box2d", 0.021},               {"pendulum_wall", "reference", 0.017},
+    {"square_landing", "reference", 0.016},    {"falling_ball", "reference", 0.012},
+    {"falling_ball_paper", "reference", 0.012}, {"dual_pendulum", "reference", 0.012},
+    {"dual_pendulum", "analytic", 0.01},       {"incline_launch", "analytic", 0.01},
 };
 
 }  // namespace

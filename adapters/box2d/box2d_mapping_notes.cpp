@@ -67,6 +67,12 @@ nlohmann::json mapping_notes(bool inject) {
       "gravity during a contact: the mapped restitution is the no-gravity value of "
       "the law");
   limits.push_back(
+      "a body turning through its contact: the restitution is that of a 1-D impact at the "
+      "onset's effective mass, applied at once; in a compliant contact the contact point moves "
+      "over the body and spin and normal motion trade energy while it lasts, which a rigid "
+      "bounce cannot do (a spinning ellipse can leave faster than any 1-D impact of the law "
+      "would send it)");
+  limits.push_back(
       "Lankarani-Nikravesh's nominal e: replaced by the restitution the law really "
       "produces");
   limits.push_back("sub-stepping: Box2D 2.4 has none besides time-of-impact");

@@ -133,6 +133,7 @@ ReportSummary write_report(const ReportOptions& options) {
 
   if (with_results) {
     report.tables.push_back(internal::capability_table(results));
+    report.tables.push_back(internal::physics_table(results));
     report.tables.push_back(internal::timings_table(results, cases));
     report.tables.push_back(
         internal::metrics_table(metrics, outcomes, !options.thresholds.empty()));

@@ -398,6 +398,19 @@ std::vector<TimeWindow> contact_windows(const Case& c, const CaseRuns& runs) {
   return merge_windows(std::move(windows));
 }
 
+std::string physics_label(const RunResult& r) {
+  if (!r.mapping.is_object() || !r.mapping.contains("physics")) return "";
+  const nlohmann::json& p = r.mapping["physics"];
+  if (p.value("foreknowledge", false)) {
+    return "oracle: parameters calibrated with the run's future (not how the engine's users run "
+           "it)";
+  }
+  if (p.value("contact_force_by", "").rfind("adapter", 0) == 0) {
+    return "inject: the case's law applied by the adapter, not the engine's contact model";
+  }
+  return "";
+}
+
 std::vector<Figure> case_figures(const Case& c, const CaseRuns& runs, const FigureLimits& limits) {
   const auto specs = paper_specs(c).value_or(generic_specs(c));
   const auto ordered = runs_in_report_order(runs);
@@ -427,6 +440,10 @@ std::vector<Figure> case_figures(const Case& c, const CaseRuns& runs, const Figu
       }
       PlotSeries s = downsample(r->engine_name, raw, windows, limits);
       if (std::isfinite(until)) s.note = fmt::format("valid until t = {:.6g} s", until);
+      // a run whose parameters saw the run's future is marked wherever it is shown
+      if (const auto label = physics_label(*r); !label.empty()) {
+        s.note += (s.note.empty() ? "" : "; ") + label;
+      }
       f.series.push_back(std::move(s));
     }
     clip_off_scale(f);

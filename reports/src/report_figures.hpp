@@ -39,4 +39,9 @@ struct FigureLimits {
 // a name made safe for ids and file names: [A-Za-z0-9_-], others become '_'
 [[nodiscard]] std::string safe_name(const std::string& name);
 
+// "oracle: ..." for a run calibrated with foreknowledge, "inject: ..." for one
+// whose contact force is the case's law applied by the adapter, "" otherwise
+// (SPEC §5b: marked wherever results are shown)
+[[nodiscard]] std::string physics_label(const RunResult& r);
+
 }  // namespace pb::internal

@@ -104,6 +104,34 @@ Table timings_table(const ResultsFile& results, const std::vector<Case>& cases) 
   return t;
 }
 
+Table physics_table(const ResultsFile& results) {
+  Table t;
+  t.id = "physics";
+  t.title = "Whose physics";
+  t.note =
+      "For every run: whose collision detection found the contacts and whose contact model "
+      "made the force (the engine's own by default), how the law's parameters were set, and "
+      "how many steps the engine took before t = 0 (a probe run looks into the run's future: "
+      "only the opt-in oracle mode does).";
+  t.columns = {"case",          "engine",     "mode",           "collision by", "contact force by",
+               "foreknowledge", "steps before t = 0", "parameters"};
+  for (const auto& cr : results.cases) {
+    for (const auto* r : runs_in_report_order(cr)) {
+      const nlohmann::json p =
+          r->mapping.is_object() && r->mapping.contains("physics") ? r->mapping["physics"]
+                                                                   : nlohmann::json::object();
+      const bool future = p.value("foreknowledge", false);
+      const long before = r->extra.is_object() ? r->extra.value("steps_before_start", 0L) : 0L;
+      t.rows.push_back({cr.case_name, r->engine_name, p.value("mode", ""),
+                        p.value("collision_by", ""), p.value("contact_force_by", ""),
+                        future ? "YES: oracle" : "no", std::to_string(before),
+                        p.value("parameters", "")});
+      t.row_status.push_back(future ? "fail" : "");
+    }
+  }
+  return t;
+}
+
 Table metrics_table(const std::vector<MetricValue>& metrics,
                     const std::vector<CheckOutcome>& outcomes, bool with_checks) {
   // the outcomes of each computed metric (several thresholds may check one)

@@ -20,6 +20,10 @@ namespace pb::internal {
 
 // per run: status, wall time, steps, simulated time, wall per simulated second
 [[nodiscard]] Table timings_table(const ResultsFile& results, const std::vector<Case>& cases);
+// whose physics produced each run (SPEC §5b: the mapping's "physics"):
+// mode, whose collision, whose contact force, how the law's parameters were
+// set, and whether any came from the run's future (an oracle run: failing row)
+[[nodiscard]] Table physics_table(const ResultsFile& results);
 
 // Every metric: case, engine, against, metric, episode, value, desired, error,
 // unit, and with `with_checks` (a thresholds file was given) the limit and

@@ -44,6 +44,44 @@ TEST(OdeContactMapping, CorrectionInvalidBelowHk) {
   EXPECT_TRUE(soft_contact(1e4, 10.0, 1e-3, true).correction_valid);
 }
 
+// soft_row gives soft_contact's numbers without the note (the hot path)
+TEST(OdeContactMapping, SoftRowIsSoftContactsNumbers) {
+  for (const bool corrected : {true, false}) {
+    for (const double k : {1e4, 1e8}) {
+      const SoftContact s = soft_contact(k, 1000.0, 1e-4, corrected);
+      const SoftRow r = soft_row(k, 1000.0, 1e-4, corrected);
+      EXPECT_EQ(r.erp, s.erp);
+      EXPECT_EQ(r.cfm, s.cfm);
+      EXPECT_EQ(r.correction_valid, s.correction_valid);
+    }
+  }
+}
+
+// SPEC §1, one force per pair, over ODE's contacts: k_i = k delta / sum d_j,
+// c_i = c d_i / sum d_j. Worked by hand: one contact is the law itself (to
+// the bit: its shares are exactly 1); a face's two contacts at equal depth
+// take half each; two contacts 3 and 1 mm deep: the springs sum to k delta
+// (k_i d_i: 3/4 and 1/4 of it, the depth-weighted centroid) and the dampers
+// to c, split 3:1.
+TEST(OdeContactMapping, SpreadLawSumsToTheLaw) {
+  const SpreadLaw one = spread_law(1e4, 10.0, 0.002, 0.002, 0.002);
+  EXPECT_EQ(one.stiffness_n_per_m, 1e4);
+  EXPECT_EQ(one.damping_ns_per_m, 10.0);
+  const SpreadLaw half = spread_law(1e4, 10.0, 0.002, 0.002, 0.004);
+  EXPECT_EQ(half.stiffness_n_per_m, 5e3);
+  EXPECT_EQ(half.damping_ns_per_m, 5.0);
+  const SpreadLaw deep = spread_law(1e4, 10.0, 0.003, 0.003, 0.004);
+  const SpreadLaw shallow = spread_law(1e4, 10.0, 0.003, 0.001, 0.004);
+  // quotients of short decimals: 1e-12 relative
+  EXPECT_NEAR(deep.stiffness_n_per_m * 0.003 + shallow.stiffness_n_per_m * 0.001, 1e4 * 0.003,
+              1e-12 * 30.0);
+  EXPECT_NEAR(deep.stiffness_n_per_m * 0.003 / (shallow.stiffness_n_per_m * 0.001), 3.0, 1e-12);
+  EXPECT_NEAR(deep.damping_ns_per_m + shallow.damping_ns_per_m, 10.0, 1e-12);
+  EXPECT_NEAR(deep.damping_ns_per_m / shallow.damping_ns_per_m, 3.0, 1e-12);
+  // nothing pressed in anywhere: the law unspread
+  EXPECT_EQ(spread_law(1e4, 10.0, 0.0, 0.0, 0.0).stiffness_n_per_m, 1e4);
+}
+
 // What ODE does with (ERP, CFM) on one contact row (ODE manual, "Soft
 // constraint"): the end-of-step separation speed u solves
 // u = ERP/h depth - CFM lambda with lambda >= 0 (clamped). Written here
