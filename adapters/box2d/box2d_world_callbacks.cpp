@@ -97,8 +97,17 @@ void PairContactListener::PreSolve(b2Contact* contact, const b2Manifold* old_man
       const double m_eff = point_effective_mass_kg(a, b, at, normal);
       if (m_eff > 0.0 && std::isfinite(m_eff)) {
         st.restitution = law_restitution(st.law, m_eff, approach);
-        if (log_.size() < log_.capacity()) {
-          log_.push_back(OnsetRecord{time_s_, k, m_eff, points, approach, st.restitution});
+        // Box2D updates contacts one by one (b2ContactManager::Collide), so
+        // an earlier new contact of the pair in this step saw only part of
+        // the points; the last one sees them all and its value is the one
+        // the solver takes: one record per pair and step, the last
+        const OnsetRecord record{time_s_, k, m_eff, points, approach, st.restitution};
+        auto same = log_.rbegin();
+        while (same != log_.rend() && same->time_s == time_s_ && same->pair != k) ++same;
+        if (same != log_.rend() && same->time_s == time_s_) {
+          *same = record;
+        } else if (log_.size() < log_.capacity()) {
+          log_.push_back(record);
         } else {
           ++unlogged_;
         }

@@ -51,7 +51,7 @@ struct PairState {
       0.0;  // N s, normal impulses of the current step (all points, TOI included)
 };
 
-// one restitution computed at a contact's onset
+// the restitution a pair's contacts took at an onset (one per pair and step)
 struct OnsetRecord {
   double time_s = 0.0;  // s, start of the step in which the contact began
   int pair = -1;

@@ -192,11 +192,14 @@ std::vector<Threshold> load_thresholds(const std::filesystem::path& path) {
 }
 
 bool fails_gate(const CheckOutcome& o) {
+  // a metric that was not computed fails whatever the threshold expects: a
+  // known breach is a value outside the band, not a missing run
+  if (o.value.metric.empty()) return true;
   return o.threshold.known_breach.empty() ? !o.passed : o.passed;
 }
 
 const char* outcome_label(const CheckOutcome& o) {
-  if (o.threshold.known_breach.empty()) return o.passed ? "pass" : "fail";
+  if (o.threshold.known_breach.empty() || o.value.metric.empty()) return o.passed ? "pass" : "fail";
   return o.passed ? "unexpected pass" : "known breach";
 }
 

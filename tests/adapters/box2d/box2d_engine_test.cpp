@@ -337,6 +337,49 @@ TEST(Box2dEngine, RotatedEllipseLandsLeftOfItsCentreAndSpinsClockwise) {
   EXPECT_LE(omega, 0.99 * hi);
 }
 
+// One force per pair (SPEC §1) on face contacts: the square of
+// square_landing.toml lands flat (its face over two ground chain edges) and
+// the arch of concave_arch.toml on both feet (two convex pieces); each
+// onset's restitution comes from all the pair's touching points at once
+// (4 here), whose depth-weighted centroid is below the centre of mass, so
+// m_eff is the body's mass and the restitution is the clamped Kelvin-Voigt
+// closed form of that mass. Tolerances: m_eff at the first landing 1e-5
+// relative (Box2D's float positions, 1e-7 relative, on lever arms of 0.1 m
+// over I / m = 6.7e-3 m^2); at later ones 2e-3: the body comes back turned
+// by ~1e-5 rad, which over the 0.3 m between the feet is 3e-6 m of depth
+// against onset depths of v dt ~ 2e-4 m, moving the depth-weighted centroid
+// by ~2.5 mm (observed: arch 7.9e-4 of its mass). The restitution is the
+// law's closed form on the logged m_eff (1e-9: the same formula in double
+// against float-rounded inputs). The turn stays below 5e-5 rad (observed
+// 1.1e-5: float contact points one ulp off symmetric, over 1.2 s).
+TEST(Box2dEngine, FaceContactsTakeTheWholeMassAndDoNotTurn) {
+  struct Expect {
+    const char* name;
+    double mass_kg;
+  };
+  for (const Expect& x : {Expect{"square_landing", 1.5}, Expect{"concave_arch", 1.0}}) {
+    const Case c = load_case(std::string(PB_CASES_DIR) + "/" + x.name + ".toml");
+    auto e = make_box2d_engine();
+    const RunResult r = run_engine(*e, c, SettingsOverrides{});
+    ASSERT_EQ(r.status, RunStatus::ok) << x.name << ": " << r.reason;
+    const nlohmann::json& onsets = r.mapping.at("onsets");
+    ASSERT_EQ(onsets.size(), r.events.size()) << x.name << ": one record per landing";
+    ASSERT_GE(onsets.size(), 2u) << x.name;
+    for (std::size_t k = 0; k < onsets.size(); ++k) {
+      const auto& o = onsets[k];
+      const double m_eff = o.at("m_eff_kg").get<double>();
+      EXPECT_EQ(o.at("points").get<int>(), 4) << x.name;
+      EXPECT_NEAR(m_eff, x.mass_kg, (k == 0 ? 1e-5 : 2e-3) * x.mass_kg) << x.name << " " << k;
+      EXPECT_NEAR(o.at("restitution").get<double>(),
+                  box2d_test::clamped_kv_restitution(1e4, 10.0, m_eff), 1e-9)
+          << x.name << " " << k;
+    }
+    double worst_rad = 0.0;
+    for (const double a : r.bodies.at(0).angle_rad) worst_rad = std::max(worst_rad, std::abs(a));
+    EXPECT_LT(worst_rad, 5e-5) << x.name;
+  }
+}
+
 // ---- capability, version, failures ---------------------------------------------
 
 TEST(Box2dEngine, SupportsAndVersion) {

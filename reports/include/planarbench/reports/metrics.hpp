@@ -42,7 +42,9 @@ struct MetricValue {
 // energy over each contact-free stretch, relative to the run's energy scale
 // m g (y_max - y_min) + max kinetic energy), constraint_drift (max distance
 // between each revolute joint's anchor on the body and its world pivot),
-// wall_per_sim_s.
+// momentum_drift (closed systems: free bodies touching only each other,
+// max |P(t) - P(0) - M g t| relative to |P(0)|, or to sum m |v(0)| when that
+// is 0), wall_per_sim_s.
 [[nodiscard]] std::vector<MetricValue> self_metrics(const Case& c, const RunResult& run);
 
 // Every metric of a case: each engine against the truth (analytic where the

@@ -43,8 +43,8 @@ struct CheckOutcome {
   std::string message;   // why it failed
 };
 
-// whether an outcome fails the gate: a breach that is not a known one, or a
-// known breach that passed
+// whether an outcome fails the gate: a breach that is not a known one, a
+// known breach that passed, or a metric that was not computed
 [[nodiscard]] bool fails_gate(const CheckOutcome& o);
 // "pass", "fail", "known breach" or "unexpected pass"
 [[nodiscard]] const char* outcome_label(const CheckOutcome& o);

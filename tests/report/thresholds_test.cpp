@@ -1,0 +1,154 @@
+// Tests for reports/src/thresholds.cpp: the gate's verdicts
+//
+// A threshold band holds or not (numpy assert_allclose semantics); a known
+// breach (an engine's own model cannot meet the band, said before the run)
+// is shown and does not fail the gate, but its pass does ("unexpected pass":
+// the stated reason no longer holds), and a metric that was not computed
+// fails whatever the threshold expects.
+#include "planarbench/reports/thresholds.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <string>
+
+#include "planarbench/errors.hpp"
+#include "report_files.hpp"
+
+namespace pb {
+namespace {
+
+namespace fs = std::filesystem;
+
+Threshold band(const std::string& engine, double rtol, const std::string& known = "") {
+  Threshold t;
+  t.case_name = "falling_ball";
+  t.engine = engine;
+  t.against = "truth";
+  t.metric = "restitution";
+  t.rtol = rtol;
+  t.why = "test";
+  t.known_breach = known;
+  return t;
+}
+
+MetricValue value(const std::string& engine, double actual, double desired) {
+  MetricValue m;
+  m.case_name = "falling_ball";
+  m.engine = engine;
+  m.against = "truth";
+  m.metric = "restitution";
+  m.episode = 0;
+  m.actual = actual;
+  m.desired = desired;
+  return m;
+}
+
+TEST(Thresholds, VerdictsOfPlainAndKnownBreaches) {
+  // desired 0.8: rtol 0.01 allows 0.008
+  const auto out = check_thresholds(
+      {band("mujoco", 0.01), band("ode", 0.01), band("box2d", 0.01, "impulsive restitution"),
+       band("reference", 0.01, "stale reason")},
+      {value("mujoco", 0.805, 0.8),     // inside: pass
+       value("ode", 0.81, 0.8),         // 0.01 > 0.008: fail
+       value("box2d", 0.70, 0.8),       // outside, as declared: known breach
+       value("reference", 0.8, 0.8)});  // inside, declared not to be: unexpected pass
+  ASSERT_EQ(out.size(), 4u);
+  EXPECT_STREQ(outcome_label(out[0]), "pass");
+  EXPECT_FALSE(fails_gate(out[0]));
+  EXPECT_STREQ(outcome_label(out[1]), "fail");
+  EXPECT_TRUE(fails_gate(out[1]));
+  EXPECT_STREQ(outcome_label(out[2]), "known breach");
+  EXPECT_FALSE(fails_gate(out[2]));
+  EXPECT_NE(out[2].message.find("known breach: impulsive restitution"), std::string::npos);
+  EXPECT_STREQ(outcome_label(out[3]), "unexpected pass");
+  EXPECT_TRUE(fails_gate(out[3]));
+  EXPECT_NE(out[3].message.find("remove known_breach"), std::string::npos) << out[3].message;
+}
+
+TEST(Thresholds, MissingMetricFailsEvenAsAKnownBreach) {
+  const auto out = check_thresholds({band("box2d", 0.01, "impulsive restitution")},
+                                    {value("mujoco", 0.8, 0.8)});
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(fails_gate(out[0]));
+  EXPECT_STREQ(outcome_label(out[0]), "fail");
+  EXPECT_NE(out[0].message.find("not computed"), std::string::npos);
+}
+
+TEST(Thresholds, NanIsABreachNotAKnownOne) {
+  const auto out =
+      check_thresholds({band("mujoco", 0.01)},
+                       {value("mujoco", std::numeric_limits<double>::quiet_NaN(), 0.8)});
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(fails_gate(out[0]));
+}
+
+TEST(Thresholds, JunitSkipsKnownBreachesAndFailsTheRest) {
+  const auto out = check_thresholds(
+      {band("ode", 0.01), band("box2d", 0.01, "impulsive restitution")},
+      {value("ode", 0.81, 0.8), value("box2d", 0.70, 0.8)});
+  const std::string x = junit_xml(out, {});
+  EXPECT_NE(x.find("tests=\"2\" failures=\"1\""), std::string::npos) << x;
+  EXPECT_NE(x.find("<skipped message="), std::string::npos);
+  EXPECT_NE(x.find("<property name=\"outcome\" value=\"known breach\"/>"), std::string::npos);
+}
+
+class ThresholdsFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           (std::string("pb_thresholds_test_") +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path write(const std::string& text) {
+    const fs::path p = dir_ / "t.toml";
+    internal::write_text_atomically(p, text);
+    return p;
+  }
+  fs::path dir_;
+};
+
+constexpr const char* kEntry = R"([[threshold]]
+case = "falling_ball"
+engine = "box2d"
+against = "truth"
+metric = "restitution"
+rtol = 0.01
+why = "1 % of e"
+)";
+
+TEST_F(ThresholdsFile, ReadsKnownBreachAndByConstruction) {
+  const auto t = load_thresholds(
+      write(std::string(kEntry) + "known_breach = \"impulsive\"\nby_construction = true\n"));
+  ASSERT_EQ(t.size(), 1u);
+  EXPECT_EQ(t[0].known_breach, "impulsive");
+  EXPECT_TRUE(t[0].by_construction);
+  const auto plain = load_thresholds(write(kEntry));
+  EXPECT_TRUE(plain[0].known_breach.empty());
+  EXPECT_FALSE(plain[0].by_construction);
+}
+
+TEST_F(ThresholdsFile, RefusesBadKnownBreachAndByConstruction) {
+  for (const char* bad : {"known_breach = \"\"\n", "known_breach = 1\n",
+                          "by_construction = \"yes\"\n", "by_construction = 1\n"}) {
+    const fs::path p = write(std::string(kEntry) + bad);
+    try {
+      (void)load_thresholds(p);
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("t.toml:8"), std::string::npos) << what;
+      EXPECT_NE(what.find(std::string(bad).substr(0, std::string(bad).find(' '))),
+                std::string::npos)
+          << what;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pb
