@@ -15,9 +15,10 @@ void bind_settings(SettingsBinder& binder, Box2dSettings* s) {
       .boolean("warm_starting", &s->warm_starting, "b2World::SetWarmStarting (default true)")
       .boolean("continuous_physics", &s->continuous_physics,
                "b2World::SetContinuousPhysics, time-of-impact sub-steps (default true)")
-      .choice("mode", &s->mode, {"engine", "inject"},
-              "engine: Box2D rigid contact, law mapped to restitution; inject: the adapter "
-              "applies the case's force law with b2Body::ApplyForce");
+      .choice("mode", &s->mode, {"native", "inject"},
+              "native = Box2D's collision and rigid contact, restitution set in PreSolve from "
+              "the law at the contact's onset (default); inject = the case's force law applied "
+              "with b2Body::ApplyForce at the adapter's contact geometry");
 }
 
 }  // namespace pb::internal::box2d

@@ -36,10 +36,11 @@ struct Box2dSettings {
   double restitution_threshold_mps = 0.0;
   bool warm_starting = true;       // b2World::SetWarmStarting (Box2D default on)
   bool continuous_physics = true;  // b2World::SetContinuousPhysics, TOI (default on)
-  // "engine": Box2D's rigid contact with the law mapped to a restitution;
+  // "native": Box2D's collision and rigid contact, the law mapped to a
+  // restitution in PreSolve at each onset (as MuJoCo's and ODE's "native");
   // "inject": contact pairs do not collide in Box2D, the adapter applies the
   // case's force law itself (b2Body::ApplyForce) from closed-form geometry.
-  std::string mode = "engine";
+  std::string mode = "native";
 };
 
 // Binds every member of `s` to `binder` (keys documented with unit and range).

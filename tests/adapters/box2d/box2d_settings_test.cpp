@@ -24,7 +24,7 @@ TEST(Box2dSettings, DefaultsAreTheDocumentedOnes) {
   EXPECT_EQ(j.at("velocity_iterations").get<int>(), 8);
   EXPECT_EQ(j.at("position_iterations").get<int>(), 3);
   EXPECT_EQ(j.at("restitution_threshold").get<double>(), 0.0);
-  EXPECT_EQ(j.at("mode").get<std::string>(), "engine");
+  EXPECT_EQ(j.at("mode").get<std::string>(), "native");
   EXPECT_TRUE(j.at("warm_starting").get<bool>());
   EXPECT_TRUE(j.at("continuous_physics").get<bool>());
 }
