@@ -41,7 +41,9 @@ int run_report(const ReportOptionsCli& opt) {
     std::printf("wrote %s and %s (%zu figures, %zu SVG files, %zu metrics", s.html.c_str(),
                 s.markdown.c_str(), s.figures, s.svg_files, s.metrics);
     if (!opt.thresholds.empty()) {
-      std::printf(", %zu of %zu checks passed", s.checks - s.checks_failed, s.checks);
+      std::printf(", %zu of %zu checks passed, %zu breached, %zu known breach(es)",
+                  s.checks - s.checks_failed - s.checks_known, s.checks, s.checks_failed,
+                  s.checks_known);
     }
     if (!opt.sweep.empty()) std::printf(", work-precision of %zu cases", s.work_precision_cases);
     std::printf(")\n");

@@ -170,6 +170,7 @@ ReportSummary write_report(const ReportOptions& options) {
   summary.metrics = metrics.size();
   summary.checks = outcomes.size();
   summary.checks_failed = failed;
+  summary.checks_known = known;
   return summary;
 }
 

@@ -121,6 +121,30 @@ why = "impulsive: fails"
   EXPECT_NE(md.find("**Check:** 1 of 2 checks passed, 1 failed"), std::string::npos);
 }
 
+// A band the engine's model cannot meet, declared before the run, is still a
+// failure in the counts (issue 16): never among the passed checks.
+TEST_F(ReportTest, KnownBreachesAreCountedApartFromPassed) {
+  internal::write_text_atomically(dir_ / "t.toml", R"(
+[[threshold]]
+case = "falling_ball"
+engine = "box2d"
+against = "truth"
+metric = "peak_force"
+rtol = 0.05
+why = "impulsive: fails"
+known_breach = "rigid contact has no stiffness"
+)");
+  ReportOptions o = options("out");
+  o.thresholds = dir_ / "t.toml";
+  const ReportSummary s = write_report(o);
+  EXPECT_EQ(s.checks, 1u);
+  EXPECT_EQ(s.checks_failed, 0u);
+  EXPECT_EQ(s.checks_known, 1u);
+  const std::string md = internal::read_text_file(dir_ / "out" / "report.md");
+  EXPECT_NE(md.find("**Check:** 0 of 1 checks passed, 1 failed (1 of them known"),
+            std::string::npos);
+}
+
 TEST_F(ReportTest, BadInputIsAnInputError) {
   ReportOptions o = options("out");
   o.results = dir_ / "absent.h5";

@@ -43,7 +43,8 @@ struct ReportSummary {
   std::size_t svg_files = 0;       // files in DIR/figures
   std::size_t metrics = 0;         // metric rows
   std::size_t checks = 0;          // checked (threshold, metric) pairs
-  std::size_t checks_failed = 0;
+  std::size_t checks_failed = 0;  // failing the gate
+  std::size_t checks_known = 0;   // failing, declared before the run (known_breach)
   std::size_t work_precision_cases = 0;  // cases of the sweep file
 };
 
