@@ -18,6 +18,7 @@
 #include "planarbench/did_you_mean.hpp"
 #include "planarbench/engines.hpp"
 #include "planarbench/errors.hpp"
+#include "planarbench/output_file.hpp"
 
 namespace pb::cli {
 
@@ -244,33 +245,7 @@ void check_jobs(int jobs) {
 }
 
 void check_output_file(const std::string& option, const fs::path& path) {
-  const std::string allowed = "give a file in an existing, writable folder";
-  if (path.empty()) throw InputError(option, 0, "", "is empty; " + allowed);
-  const std::string given = path.string();
-  std::error_code ec;
-  if (fs::is_directory(path, ec) || !path.has_filename()) {
-    throw InputError(option, 0, given, "is a folder, not a file; " + allowed);
-  }
-  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-  if (!fs::exists(dir, ec)) {
-    throw InputError(option, 0, given,
-                     fmt::format("folder '{}' does not exist; {}", dir.string(), allowed));
-  }
-  if (!fs::is_directory(dir, ec)) {
-    throw InputError(option, 0, given,
-                     fmt::format("'{}' is not a folder; {}", dir.string(), allowed));
-  }
-  // a probe file is the only test that is right for every user and mount
-  const fs::path probe = dir / fmt::format(".planarbench-probe.{}", static_cast<long>(::getpid()));
-  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-  if (fd < 0) {
-    const int err = errno;
-    throw InputError(option, 0, given,
-                     fmt::format("folder '{}' is not writable ({}); {}", dir.string(),
-                                 std::strerror(err), allowed));
-  }
-  ::close(fd);
-  ::unlink(probe.c_str());
+  (void)output_target(option, path);
 }
 
 void check_not_an_input(const std::string& option, const fs::path& output,

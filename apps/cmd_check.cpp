@@ -14,6 +14,7 @@
 #include "planarbench/did_you_mean.hpp"
 #include "planarbench/engines.hpp"
 #include "planarbench/errors.hpp"
+#include "planarbench/output_file.hpp"
 #include "planarbench/reports/thresholds.hpp"
 #include "planarbench/results_file.hpp"
 
@@ -28,28 +29,6 @@ struct CheckOptions {
   std::string summary;
   bool quiet = false;
 };
-
-// writes text to path through a temporary file and a rename; on failure
-// nothing is left behind
-void write_text_atomically(const std::filesystem::path& path, const std::string& text) {
-  const auto tmp = path.string() + ".tmp";
-  std::error_code ec;
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    if (!f) throw InputError(path.string(), 0, "", "cannot be written");
-    f << text;
-    if (!f.flush()) {
-      f.close();
-      std::filesystem::remove(tmp, ec);
-      throw InputError(path.string(), 0, "", "write failed (disk full?)");
-    }
-  }
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    throw InputError(path.string(), 0, "", "cannot be replaced: " + ec.message());
-  }
-}
 
 int run_check(const CheckOptions& opt) {
   // everything that can be checked before the (large) results file is read
@@ -84,8 +63,8 @@ int run_check(const CheckOptions& opt) {
   }
   const auto outcomes = check_thresholds(thresholds, metrics);
 
-  write_text_atomically(junit, junit_xml(outcomes, diverged));
-  write_text_atomically(summary, markdown_summary(outcomes, diverged));
+  (void)write_text_atomically("--junit", junit, junit_xml(outcomes, diverged));
+  (void)write_text_atomically("--summary", summary, markdown_summary(outcomes, diverged));
 
   std::size_t failed = 0;
   std::size_t known = 0;

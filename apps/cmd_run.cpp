@@ -12,6 +12,7 @@
 #include "planarbench/case_loader.hpp"
 #include "planarbench/engines.hpp"
 #include "planarbench/errors.hpp"
+#include "planarbench/output_file.hpp"
 #include "planarbench/results_file.hpp"
 #include "planarbench/runner.hpp"
 #include "task_scheduler.hpp"
@@ -74,7 +75,8 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
   // every option is checked before a case is read or anything runs, the
   // output folder included (fail fast, write nothing)
   check_jobs(opt.jobs);
-  check_output_file("--out", opt.out);
+  // the runs' samples stream to the results file's folder as they are made
+  const std::filesystem::path out_target = output_target("--out", opt.out);
   check_engine_spec(opt.engine_spec);
   const Overrides overrides = parse_overrides(opt.set);
   // a comma-separated list of case specs is accepted too
@@ -130,6 +132,8 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
         auto last = std::chrono::steady_clock::now();
         RunOptions ro;
         ro.progress = [&](double f) { progress.fraction(i, what, f, last); };
+        ro.spool_dir = out_target.parent_path().empty() ? std::filesystem::path(".")
+                                                        : out_target.parent_path();
         results[i] = run_engine(*engine, c, case_engine_settings[task.case_index], ro);
         progress.finished(i, what, results[i]);
       } catch (...) {

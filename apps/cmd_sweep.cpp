@@ -75,21 +75,6 @@ class Progress {
   std::mutex mutex_;
 };
 
-// the --out target must be writable before minutes are spent computing it
-void check_out_path(const fs::path& path) {
-  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) {
-    throw InputError("--out", 0, "", fmt::format("directory '{}' does not exist", dir.string()));
-  }
-  if (::access(dir.c_str(), W_OK) != 0) {
-    throw InputError("--out", 0, "", fmt::format("directory '{}' is not writable", dir.string()));
-  }
-  if (path.filename().empty() || fs::is_directory(path, ec)) {
-    throw InputError("--out", 0, "", fmt::format("'{}' is a directory, not a file", path.string()));
-  }
-}
-
 // `base` with a settings list on top (the truth's own settings win)
 SettingsOverrides overrides_of(const std::vector<std::pair<std::string, std::string>>& settings,
                                const SettingsOverrides& base) {
@@ -167,7 +152,8 @@ int run_sweep(const SweepOptionsCli& opt, int argc, char** argv) {
     dts = opt.dt_ladder.empty() ? quick_dt_ladder() : two_coarsest(dts);
     rtols = quick_rtol_ladder();
   }
-  check_out_path(opt.out);
+  // the --out target must be writable before minutes are spent computing it
+  check_output_file("--out", opt.out);
   const Overrides overrides = parse_overrides(opt.set);
   reject_swept_keys(overrides.engine_keys);
   const auto engines = sweep_engines(opt.engine_spec);

@@ -8,7 +8,11 @@
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_polygon_shape.h>
 
+#include <algorithm>
 #include <limits>
+#include <vector>
+
+#include <box2d/b2_contact.h>
 
 #include "box2d_frame.hpp"
 
@@ -91,9 +95,32 @@ bool collide(const Primitive& x, const b2Transform& xfx, const Primitive& y, con
   return true;
 }
 
+// position of fixture f in its body's fixture list
+int fixture_index(const b2Fixture* f) {
+  int i = 0;
+  for (const b2Fixture* g = f->GetBody()->GetFixtureList(); g != nullptr && g != f; g = g->GetNext()) {
+    ++i;
+  }
+  return i;
+}
+
+// one fixture-child pair of the two bodies: (fixture of a, its child,
+// fixture of b, its child), ordered as the fixture lists and children are
+struct ChildPair {
+  int fixture_a, child_a, fixture_b, child_b;
+  const b2Fixture* fa;
+  const b2Fixture* fb;
+  bool operator<(const ChildPair& o) const {
+    if (fixture_a != o.fixture_a) return fixture_a < o.fixture_a;
+    if (child_a != o.child_a) return child_a < o.child_a;
+    if (fixture_b != o.fixture_b) return fixture_b < o.fixture_b;
+    return child_b < o.child_b;
+  }
+};
+
 }  // namespace
 
-ContactGeometry probe_contact(const b2Body& a, const b2Body& b) {
+ContactGeometry probe_contact(const b2Body& a, const b2Body& b, ProbeScope scope) {
   const b2Transform& xfa = a.GetTransform();
   const b2Transform& xfb = b.GetTransform();
   ContactGeometry deepest;  // from manifolds
@@ -101,64 +128,95 @@ ContactGeometry probe_contact(const b2Body& a, const b2Body& b) {
   double best_separation = std::numeric_limits<double>::infinity();
   double best_gap = std::numeric_limits<double>::infinity();
 
-  for (const b2Fixture* fa = a.GetFixtureList(); fa != nullptr; fa = fa->GetNext()) {
-    for (int ca = 0; ca < fa->GetShape()->GetChildCount(); ++ca) {
-      const Primitive x = primitive(*fa, ca);
-      for (const b2Fixture* fb = b.GetFixtureList(); fb != nullptr; fb = fb->GetNext()) {
-        for (int cb = 0; cb < fb->GetShape()->GetChildCount(); ++cb) {
-          const Primitive y = primitive(*fb, cb);
-          b2Manifold m;
-          bool swapped = false;
-          if (!collide(x, xfa, y, xfb, m, swapped)) continue;
-          if (m.pointCount > 0) {
-            // b2WorldManifold: normal from its first shape to its second,
-            // points midway between the two skinned surfaces
-            b2WorldManifold wm;
-            if (swapped) {
-              wm.Initialize(&m, xfb, y.radius, xfa, x.radius);
-            } else {
-              wm.Initialize(&m, xfa, x.radius, xfb, y.radius);
-            }
-            const Vec2 n = swapped ? Vec2(-from_b2(wm.normal)) : from_b2(wm.normal);
-            for (int i = 0; i < m.pointCount; ++i) {
-              const double s = static_cast<double>(wm.separations[i]);
-              if (s < best_separation) {
-                best_separation = s;
-                deepest.valid = true;
-                deepest.touching = true;
-                deepest.penetration_m = -s;
-                deepest.normal = n;
-                deepest.point_m = from_b2(wm.points[i]);
-              }
-            }
-            continue;
-          }
-          if (deepest.valid) continue;  // a touching pair wins; no need for gaps
-          // apart: GJK between the cores, radii subtracted
-          b2DistanceInput in;
-          in.proxyA.Set(x.shape, x.child);
-          in.proxyB.Set(y.shape, y.child);
-          in.transformA = xfa;
-          in.transformB = xfb;
-          in.useRadii = false;
-          b2SimplexCache cache;
-          cache.count = 0;
-          b2DistanceOutput out;
-          b2Distance(&out, &cache, &in);
-          if (!(out.distance > 0.0f)) continue;  // cores overlap: no gap to report
-          const double gap = static_cast<double>(out.distance) - x.radius - y.radius;
-          if (gap < best_gap) {
-            best_gap = gap;
-            const Vec2 pa = from_b2(out.pointA);
-            const Vec2 pb = from_b2(out.pointB);
-            const Vec2 n = (pb - pa).normalized();
-            closest.valid = true;
-            closest.penetration_m = -gap;
-            closest.normal = n;
-            closest.point_m = 0.5 * ((pa + x.radius * n) + (pb - y.radius * n));
+  // The fixture-child pairs Box2D's broad phase holds for the two bodies
+  // (b2Body::GetContactList): those whose fat AABBs overlap, which includes
+  // every pair a manifold can have points for (touching means within the
+  // radii, where the AABBs, radii included, overlap). Pairs farther apart
+  // than the fat margin (b2_aabbExtension, 0.1 m, plus the predicted motion)
+  // are not measured: the probe costs what Box2D's own contacts cost, not a
+  // pass over every child of a long chain (issue 15: a 1000 s run's ground
+  // chain has ~1e6 segments). Sorted into fixture-list order so that ties
+  // between equally deep points resolve as a pass over the lists would.
+  thread_local std::vector<ChildPair> pairs;
+  pairs.clear();
+  if (scope == ProbeScope::every_child) {
+    int ia = 0;
+    for (const b2Fixture* fa = a.GetFixtureList(); fa != nullptr; fa = fa->GetNext(), ++ia) {
+      int ib = 0;
+      for (const b2Fixture* fb = b.GetFixtureList(); fb != nullptr; fb = fb->GetNext(), ++ib) {
+        for (int ca = 0; ca < fa->GetShape()->GetChildCount(); ++ca) {
+          for (int cb = 0; cb < fb->GetShape()->GetChildCount(); ++cb) {
+            pairs.push_back(ChildPair{ia, ca, ib, cb, fa, fb});
           }
         }
       }
+    }
+  }
+  for (const b2ContactEdge* e = a.GetContactList();
+       scope == ProbeScope::broad_phase && e != nullptr; e = e->next) {
+    if (e->other != &b) continue;
+    const b2Contact* c = e->contact;
+    const bool a_first = c->GetFixtureA()->GetBody() == &a;
+    const b2Fixture* fa = a_first ? c->GetFixtureA() : c->GetFixtureB();
+    const b2Fixture* fb = a_first ? c->GetFixtureB() : c->GetFixtureA();
+    const int ca = a_first ? c->GetChildIndexA() : c->GetChildIndexB();
+    const int cb = a_first ? c->GetChildIndexB() : c->GetChildIndexA();
+    pairs.push_back(ChildPair{fixture_index(fa), ca, fixture_index(fb), cb, fa, fb});
+  }
+  std::sort(pairs.begin(), pairs.end());
+
+  for (const ChildPair& cp : pairs) {
+    const Primitive x = primitive(*cp.fa, cp.child_a);
+    const Primitive y = primitive(*cp.fb, cp.child_b);
+    b2Manifold m;
+    bool swapped = false;
+    if (!collide(x, xfa, y, xfb, m, swapped)) continue;
+    if (m.pointCount > 0) {
+      // b2WorldManifold: normal from its first shape to its second,
+      // points midway between the two skinned surfaces
+      b2WorldManifold wm;
+      if (swapped) {
+        wm.Initialize(&m, xfb, y.radius, xfa, x.radius);
+      } else {
+        wm.Initialize(&m, xfa, x.radius, xfb, y.radius);
+      }
+      const Vec2 n = swapped ? Vec2(-from_b2(wm.normal)) : from_b2(wm.normal);
+      for (int i = 0; i < m.pointCount; ++i) {
+        const double s = static_cast<double>(wm.separations[i]);
+        if (s < best_separation) {
+          best_separation = s;
+          deepest.valid = true;
+          deepest.touching = true;
+          deepest.penetration_m = -s;
+          deepest.normal = n;
+          deepest.point_m = from_b2(wm.points[i]);
+        }
+      }
+      continue;
+    }
+    if (deepest.valid) continue;  // a touching pair wins; no need for gaps
+    // apart: GJK between the cores, radii subtracted
+    b2DistanceInput in;
+    in.proxyA.Set(x.shape, x.child);
+    in.proxyB.Set(y.shape, y.child);
+    in.transformA = xfa;
+    in.transformB = xfb;
+    in.useRadii = false;
+    b2SimplexCache cache;
+    cache.count = 0;
+    b2DistanceOutput out;
+    b2Distance(&out, &cache, &in);
+    if (!(out.distance > 0.0f)) continue;  // cores overlap: no gap to report
+    const double gap = static_cast<double>(out.distance) - x.radius - y.radius;
+    if (gap < best_gap) {
+      best_gap = gap;
+      const Vec2 pa = from_b2(out.pointA);
+      const Vec2 pb = from_b2(out.pointB);
+      const Vec2 n = (pb - pa).normalized();
+      closest.valid = true;
+      closest.penetration_m = -gap;
+      closest.normal = n;
+      closest.point_m = 0.5 * ((pa + x.radius * n) + (pb - y.radius * n));
     }
   }
   return deepest.valid ? deepest : closest;

@@ -18,10 +18,16 @@ struct ContactGeometry {
   Vec2 point_m = Vec2::Zero();  // m, midpoint of the two bodies' surface points
 };
 
-// Deepest point over every fixture (and chain child) pair of a and b while
+// Over the fixture (and chain child) pairs of a and b that Box2D's broad
+// phase holds (fat AABBs overlapping; none: valid = false): the deepest point while
 // some manifold has points (penetration = -b2WorldManifold::separations, the
 // radii included); otherwise the closest pair (b2Distance without radii, the
 // radii subtracted), so the penetration is continuous through touch-down.
-[[nodiscard]] ContactGeometry probe_contact(const b2Body& a, const b2Body& b);
+// Which fixture-child pairs are measured: Box2D's broad-phase pairs (after
+// a step, when Box2D has found them), or every pair (before the first step,
+// when the broad phase has not run yet; tests).
+enum class ProbeScope { broad_phase, every_child };
+[[nodiscard]] ContactGeometry probe_contact(const b2Body& a, const b2Body& b,
+                                            ProbeScope scope = ProbeScope::broad_phase);
 
 }  // namespace pb::internal::box2d

@@ -512,7 +512,9 @@ void Box2dEngine::sample_engine_pair(std::size_t k) {
   const ContactPair& p = case_.contacts[k];
   const b2Body& a = *bodies_[static_cast<std::size_t>(p.body_a)];
   const b2Body& b = *bodies_[static_cast<std::size_t>(p.body_b)];
-  const ContactGeometry g = probe_contact(a, b);
+  // before the first step Box2D's broad phase has not paired anything yet
+  const ContactGeometry g =
+      probe_contact(a, b, steps_ == 0 ? ProbeScope::every_child : ProbeScope::broad_phase);
   const PairSample before = samples_[k];
   PairSample& s = samples_[k];
   const double impulse = pair_states_[k].step_impulse_ns;
@@ -544,7 +546,18 @@ void Box2dEngine::sample_engine_pair(std::size_t k) {
   // opening at its end
   const bool was_open = tracker_.in_contact(p.body_a, p.body_b);
   track(k, before, s);
-  if (!was_open && !tracker_.in_contact(p.body_a, p.body_b)) orphan_impulse_ns_ += impulse;
+  if (!was_open && !tracker_.in_contact(p.body_a, p.body_b) && impulse > 0.0) {
+    if (steps_ > 0 && before.valid && s.valid) {
+      // apart at both ends of the step and pushed within it: Box2D's time of
+      // impact solved a fast impact inside the step (b2World::SolveTOI, whose
+      // impulses PostSolve reports): an episode of its own
+      const double t_before = static_cast<double>(steps_ - 1) * settings_.dt_s;
+      tracker_.record_within_step(t_before, time_s_, p.body_a, p.body_b, -before.penetration_m,
+                                  before.speed_mps, -s.speed_mps, impulse);
+    } else {
+      orphan_impulse_ns_ += impulse;
+    }
+  }
 }
 
 // Box2D's symplectic Euler moves the positions of a step with the velocity

@@ -94,6 +94,26 @@ void EpisodeTracker::observe_separated(double t_s, int body_a, int body_b,
   last_[key] = Last{t_s, kNaN, normal_speed_mps, false};
 }
 
+void EpisodeTracker::record_within_step(double t0_s, double t1_s, int body_a, int body_b,
+                                        double gap0_m, double approach_mps, double separation_mps,
+                                        double impulse_ns) {
+  const double dt = t1_s - t0_s;
+  double at = t0_s;
+  if (std::isfinite(gap0_m) && approach_mps > 0.0) at += std::clamp(gap0_m / approach_mps, 0.0, dt);
+  ContactEpisode ep;
+  ep.body_a = body_a;
+  ep.body_b = body_b;
+  ep.onset_time_s = at;
+  ep.offset_time_s = at;
+  ep.approach_speed_mps = approach_mps;
+  ep.separation_speed_mps = separation_mps;
+  ep.restitution = approach_mps > 0.0 ? separation_mps / approach_mps : kNaN;
+  ep.peak_force_n = dt > 0.0 ? impulse_ns / dt : kNaN;
+  ep.impulse_ns = impulse_ns;
+  ep.max_penetration_m = 0.0;
+  closed_.push_back(ep);
+}
+
 bool EpisodeTracker::in_contact(int body_a, int body_b) const {
   return open_.count(std::make_pair(body_a, body_b)) != 0;
 }

@@ -18,72 +18,25 @@
 #include "internal/hdf5_datasets.hpp"
 #include "internal/hdf5_handle.hpp"
 #include "internal/hdf5_sha256.hpp"
+#include "internal/results_layout.hpp"
+#include "internal/run_spool_data.hpp"
+#include "planarbench/run_spool.hpp"
 #include "planarbench/build_info.hpp"
 #include "planarbench/errors.hpp"
+#include "planarbench/output_file.hpp"
 
 namespace pb {
 
 namespace fs = std::filesystem;
+using internal::ContactRecord;
+using internal::EventRecord;
 using internal::Hdf5Error;
 using internal::Hid;
+using internal::contact_layout;
+using internal::event_layout;
+using internal::put_name;
 
 namespace {
-
-// ---- table rows as C++ records (field order = column order in the file) ----
-
-struct ContactRecord {
-  double time_s;
-  char body_a[internal::kNameBytes];
-  char body_b[internal::kNameBytes];
-  double force_n;
-  double penetration_m;
-  double normal[2];
-  double point_m[2];
-};
-
-struct EventRecord {
-  char body_a[internal::kNameBytes];
-  char body_b[internal::kNameBytes];
-  double onset_time_s;
-  double offset_time_s;
-  double approach_speed_mps;
-  double separation_speed_mps;
-  double restitution;
-  double peak_force_n;
-  double impulse_ns;
-  double max_penetration_m;
-};
-
-const internal::TableLayout& contact_layout() {
-  using internal::FieldKind;
-  static const internal::TableLayout layout{
-      sizeof(ContactRecord),
-      {{"time", FieldKind::f8, offsetof(ContactRecord, time_s), "s"},
-       {"body_a", FieldKind::name, offsetof(ContactRecord, body_a), ""},
-       {"body_b", FieldKind::name, offsetof(ContactRecord, body_b), ""},
-       {"force_n", FieldKind::f8, offsetof(ContactRecord, force_n), "N"},
-       {"penetration", FieldKind::f8, offsetof(ContactRecord, penetration_m), "m"},
-       {"normal", FieldKind::f8x2, offsetof(ContactRecord, normal), "1"},
-       {"point", FieldKind::f8x2, offsetof(ContactRecord, point_m), "m"}}};
-  return layout;
-}
-
-const internal::TableLayout& event_layout() {
-  using internal::FieldKind;
-  static const internal::TableLayout layout{
-      sizeof(EventRecord),
-      {{"body_a", FieldKind::name, offsetof(EventRecord, body_a), ""},
-       {"body_b", FieldKind::name, offsetof(EventRecord, body_b), ""},
-       {"onset_time", FieldKind::f8, offsetof(EventRecord, onset_time_s), "s"},
-       {"offset_time", FieldKind::f8, offsetof(EventRecord, offset_time_s), "s"},
-       {"approach_speed", FieldKind::f8, offsetof(EventRecord, approach_speed_mps), "m/s"},
-       {"separation_speed", FieldKind::f8, offsetof(EventRecord, separation_speed_mps), "m/s"},
-       {"restitution", FieldKind::f8, offsetof(EventRecord, restitution), "1"},
-       {"peak_force", FieldKind::f8, offsetof(EventRecord, peak_force_n), "N"},
-       {"impulse", FieldKind::f8, offsetof(EventRecord, impulse_ns), "N s"},
-       {"max_penetration", FieldKind::f8, offsetof(EventRecord, max_penetration_m), "m"}}};
-  return layout;
-}
 
 std::string child_path(hid_t loc, const std::string& name) {
   const std::string parent = internal::object_path(loc);
@@ -105,21 +58,6 @@ Hid create_group(hid_t loc, const std::string& name) {
       "cannot track creation order");
   return internal::owned_group(H5Gcreate2(loc, name.c_str(), H5P_DEFAULT, gcpl.get(), H5P_DEFAULT),
                                object, "cannot create the group");
-}
-
-// copies a body name into a NUL-padded table cell
-void put_name(char (&cell)[internal::kNameBytes], const std::vector<std::string>& names, int index,
-              const std::string& object) {
-  if (index < 0 || static_cast<std::size_t>(index) >= names.size()) {
-    throw Hdf5Error(
-        object, fmt::format("body index {} is not in body_names ({} names)", index, names.size()));
-  }
-  const std::string& name = names[static_cast<std::size_t>(index)];
-  if (name.size() > internal::kNameBytes) {
-    throw Hdf5Error(
-        object, fmt::format("body name '{}' is longer than {} bytes", name, internal::kNameBytes));
-  }
-  std::memcpy(cell, name.data(), name.size());
 }
 
 void write_h5md(hid_t file) {
@@ -158,30 +96,56 @@ std::vector<double> flatten(const std::vector<Vec2>& v) {
 
 void write_body(hid_t bodies, const BodyTrajectory& b, internal::ChunkWriter* writer) {
   Hid g = create_group(bodies, b.name);
-  internal::write_double_dataset(g.get(), "time", b.time_s, 0, "s", writer);
-  internal::write_double_dataset(g.get(), "position", flatten(b.position_m), 2, "m", writer);
-  internal::write_double_dataset(g.get(), "angle", b.angle_rad, 0, "rad", writer);
-  internal::write_double_dataset(g.get(), "velocity", flatten(b.velocity_mps), 2, "m/s",
-                                 writer);
-  internal::write_double_dataset(g.get(), "angular_velocity", b.angular_velocity_radps, 0, "rad/s",
-                                 writer);
+  const std::vector<double> columns[] = {b.time_s, flatten(b.position_m), b.angle_rad,
+                                         flatten(b.velocity_mps), b.angular_velocity_radps};
+  for (std::size_t k = 0; k < std::size(internal::kBodyColumns); ++k) {
+    const auto& c = internal::kBodyColumns[k];
+    internal::write_double_dataset(g.get(), c.name, columns[k], c.cols, c.unit, writer);
+  }
+}
+
+// dataset `name` of loc from a spool whose rows are the bytes of file_type
+// (checked: equal to the rows' type in memory, mem_type)
+Hid write_spooled(hid_t loc, const char* name, hid_t file_type, hid_t mem_type, hsize_t cols,
+                  const internal::DatasetSpool& spool) {
+  const std::string object = child_path(loc, name);
+  if (H5Tequal(file_type, mem_type) <= 0) {
+    throw Hdf5Error(object, "the spooled rows are not in the file's byte layout");
+  }
+  const hsize_t dims[2] = {spool.rows(), cols};
+  Hid d = internal::create_dataset(loc, name, file_type, cols == 0 ? 1 : 2, dims);
+  spool.write(d.get(), file_type, object);
+  return d;
+}
+
+// the bodies and the contacts table of a run whose samples went to a spool
+void write_spooled_run(hid_t run, const RunSpool& spool) {
+  const auto& data = spool.data();
+  Hid bodies = create_group(run, "bodies");
+  for (const auto& b : data.bodies) {
+    Hid g = create_group(bodies.get(), b.name);
+    for (std::size_t k = 0; k < std::size(internal::kBodyColumns); ++k) {
+      const auto& c = internal::kBodyColumns[k];
+      Hid d = write_spooled(g.get(), c.name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, c.cols,
+                            b.columns[k]);
+      internal::write_string_attribute(d.get(), "unit", c.unit);
+      d.close(child_path(g.get(), c.name));
+    }
+  }
+  const std::string object = child_path(run, "contacts");
+  Hid file_type = internal::table_type(contact_layout(), true, object);
+  Hid mem_type = internal::table_type(contact_layout(), false, object);
+  Hid d = write_spooled(run, "contacts", file_type.get(), mem_type.get(), 0, data.contacts);
+  internal::write_table_attributes(d, contact_layout());
+  d.close(object);
 }
 
 void write_contacts(hid_t run, const RunResult& r, internal::ChunkWriter* writer) {
   const std::string object = child_path(run, "contacts");
-  std::vector<ContactRecord> rows(r.contacts.size(), ContactRecord{});
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const ContactRow& c = r.contacts[i];
-    ContactRecord& row = rows[i];
-    row.time_s = c.time_s;
-    put_name(row.body_a, r.body_names, c.sample.body_a, object);
-    put_name(row.body_b, r.body_names, c.sample.body_b, object);
-    row.force_n = c.sample.force_n;
-    row.penetration_m = c.sample.penetration_m;
-    row.normal[0] = c.sample.normal.x();
-    row.normal[1] = c.sample.normal.y();
-    row.point_m[0] = c.sample.point_m.x();
-    row.point_m[1] = c.sample.point_m.y();
+  std::vector<ContactRecord> rows;
+  rows.reserve(r.contacts.size());
+  for (const ContactRow& c : r.contacts) {
+    rows.push_back(internal::contact_record(c.time_s, c.sample, r.body_names, object));
   }
   internal::write_table(run, "contacts", contact_layout(), rows.data(), rows.size(), writer);
 }
@@ -225,13 +189,17 @@ void write_run(hid_t case_group, const RunResult& r, internal::ChunkWriter* writ
   internal::write_int64_attribute(g.get(), "steps", static_cast<std::int64_t>(r.steps));
   internal::write_string_array_attribute(g.get(), "body_names", r.body_names);
 
-  // an unsupported run has no trajectories: no bodies group (SPEC §5)
-  if (r.status != RunStatus::unsupported || !r.bodies.empty()) {
-    Hid bodies = create_group(g.get(), "bodies");
-    for (const auto& b : r.bodies) write_body(bodies.get(), b, writer);
+  if (r.spool) {
+    write_spooled_run(g.get(), *r.spool);
+  } else {
+    // an unsupported run has no trajectories: no bodies group (SPEC §5)
+    if (r.status != RunStatus::unsupported || !r.bodies.empty()) {
+      Hid bodies = create_group(g.get(), "bodies");
+      for (const auto& b : r.bodies) write_body(bodies.get(), b, writer);
+    }
+    // tables are always present, zero rows when empty, so readers need no special case
+    write_contacts(g.get(), r, writer);
   }
-  // tables are always present, zero rows when empty, so readers need no special case
-  write_contacts(g.get(), r, writer);
   write_events(g.get(), r, writer);
 }
 
@@ -264,46 +232,6 @@ void write_file(const fs::path& path, const ResultsFile& results, int threads) {
   }
   writer.finish();
   file.close(object);
-}
-
-// The temporary a writer of `name` uses: `.<name>.tmp.<pid>` beside it.
-std::string temporary_prefix(const fs::path& path) {
-  return fmt::format(".{}.tmp.", path.filename().string());
-}
-
-// Removes the temporaries of earlier writers of the same target that were
-// killed mid-write (SIGKILL, OOM, power loss run no clean-up): those whose pid
-// names no process on this host (kill(pid, 0) fails with ESRCH; EPERM means
-// alive). A reused pid only delays the removal to a later run. Best effort:
-// the write it follows has already succeeded.
-void remove_stale_temporaries(const fs::path& dir, const fs::path& path) {
-  const std::string prefix = temporary_prefix(path);
-  std::error_code ec;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::string file = it->path().filename().string();
-    if (file.rfind(prefix, 0) != 0) continue;
-    const std::string digits = file.substr(prefix.size());
-    // a pid: decimal, at most 7 digits (pid_max <= 2^22 on Linux)
-    if (digits.empty() || digits.size() > 7 ||
-        digits.find_first_not_of("0123456789") != std::string::npos) {
-      continue;
-    }
-    const long pid = std::stol(digits);
-    if (pid <= 0 || pid == static_cast<long>(::getpid())) continue;
-    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
-    std::error_code ignored;
-    fs::remove(it->path(), ignored);
-  }
-}
-
-// flushes a closed file's data to the disk
-void fsync_path(const fs::path& path, int flags) {
-  const int fd = ::open(path.c_str(), flags);
-  if (fd < 0) throw std::system_error(errno, std::generic_category(), "open " + path.string());
-  const int rc = ::fsync(fd);
-  const int err = errno;
-  ::close(fd);
-  if (rc != 0) throw std::system_error(err, std::generic_category(), "fsync " + path.string());
 }
 
 // ---- reading ----------------------------------------------------------------
@@ -507,43 +435,14 @@ ResultsFile read_file(hid_t file) {
 
 void write_results_file(const fs::path& path, const ResultsFile& results, int threads) {
   internal::QuietHdf5 quiet;
-  // the target directory must exist and be writable before anything is made
-  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-  std::error_code ec;
-  if (!fs::exists(dir, ec)) {
-    throw InputError("--out", 0, "", fmt::format("directory '{}' does not exist", dir.string()));
-  }
-  if (!fs::is_directory(dir, ec)) {
-    throw InputError("--out", 0, "", fmt::format("'{}' is not a directory", dir.string()));
-  }
-  if (::access(dir.c_str(), W_OK) != 0) {
-    throw InputError("--out", 0, "", fmt::format("directory '{}' is not writable", dir.string()));
-  }
-  if (path.filename().empty() || fs::is_directory(path, ec)) {
-    throw InputError("--out", 0, "", fmt::format("'{}' is a directory, not a file", path.string()));
-  }
-
-  // write a temporary file beside the target, flush it, then rename over the
-  // target: readers see the old file or the complete new one, never a part
-  const fs::path tmp =
-      dir / fmt::format("{}{}", temporary_prefix(path), static_cast<long>(::getpid()));
-  try {
-    write_file(tmp, results, threads);
-    fsync_path(tmp, O_RDONLY);
-    fs::rename(tmp, path);
-  } catch (const Hdf5Error& e) {
-    fs::remove(tmp, ec);
-    throw std::runtime_error(fmt::format("{}: cannot write results: {}", path.string(), e.what()));
-  } catch (...) {
-    fs::remove(tmp, ec);
-    throw;
-  }
-  remove_stale_temporaries(dir, path);
-  // make the rename and removals durable; the file is complete either way
-  try {
-    fsync_path(dir, O_RDONLY | O_DIRECTORY);
-  } catch (const std::system_error&) {
-  }
+  (void)write_atomically("--out", path, [&](const fs::path& tmp) {
+    try {
+      write_file(tmp, results, threads);
+    } catch (const Hdf5Error& e) {
+      throw std::runtime_error(
+          fmt::format("{}: cannot write results: {}", path.string(), e.what()));
+    }
+  });
 }
 
 ResultsFile read_results_file(const fs::path& path) {

@@ -8,6 +8,7 @@
 
 #include "planarbench/energy_budget.hpp"
 #include "planarbench/errors.hpp"
+#include "planarbench/run_spool.hpp"
 
 namespace pb {
 
@@ -51,10 +52,16 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
   const int n = c.output_samples();
   std::vector<int> moving;
   for (std::size_t i = 0; i < c.bodies.size(); ++i) {
-    if (c.bodies[i].fixed) continue;
-    moving.push_back(static_cast<int>(i));
+    if (!c.bodies[i].fixed) moving.push_back(static_cast<int>(i));
+  }
+  std::shared_ptr<RunSpool> spool;
+  if (!options.spool_dir.empty()) {
+    spool = std::make_shared<RunSpool>(options.spool_dir, r.body_names, moving);
+    r.spool = spool;
+  }
+  for (const int i : spool ? std::vector<int>{} : moving) {
     BodyTrajectory tr;
-    tr.name = c.bodies[i].name;
+    tr.name = c.bodies[static_cast<std::size_t>(i)].name;
     tr.time_s.reserve(static_cast<std::size_t>(n));
     tr.position_m.reserve(static_cast<std::size_t>(n));
     tr.angle_rad.reserve(static_cast<std::size_t>(n));
@@ -65,6 +72,7 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<BodyState> states;
+  std::vector<double> last_angle(moving.size(), 0.0);  // rad, the previous sample's
   std::vector<ContactSample> contacts;
   // the generic fault checks of every sample, whatever the engine: a
   // non-finite state, and kinetic energy beyond what passive contacts allow
@@ -97,15 +105,26 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
       }
       for (std::size_t j = 0; j < moving.size(); ++j) {
         const BodyState& s = states[static_cast<std::size_t>(moving[j])];
+        const double angle = k == 0 ? s.angle_rad : unwrapped(last_angle[j], s.angle_rad);
+        last_angle[j] = angle;
+        if (spool) {
+          spool->append_state(j, t, s, angle);
+          continue;
+        }
         BodyTrajectory& tr = r.bodies[j];
         tr.time_s.push_back(t);
         tr.position_m.push_back(s.position_m);
-        tr.angle_rad.push_back(tr.angle_rad.empty() ? s.angle_rad
-                                                    : unwrapped(tr.angle_rad.back(), s.angle_rad));
+        tr.angle_rad.push_back(angle);
         tr.velocity_mps.push_back(s.velocity_mps);
         tr.angular_velocity_radps.push_back(s.angular_velocity_radps);
       }
-      for (const auto& cs : contacts) r.contacts.push_back(ContactRow{t, cs});
+      for (const auto& cs : contacts) {
+        if (spool) {
+          spool->append_contact(t, cs);
+        } else {
+          r.contacts.push_back(ContactRow{t, cs});
+        }
+      }
       if (options.progress) {
         const int percent = static_cast<int>(100.0 * k / std::max(1, n - 1));
         if (percent != reported_percent) {

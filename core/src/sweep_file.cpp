@@ -17,6 +17,7 @@
 #include "internal/hdf5_sha256.hpp"
 #include "planarbench/build_info.hpp"
 #include "planarbench/errors.hpp"
+#include "planarbench/output_file.hpp"
 
 namespace pb {
 
@@ -156,16 +157,6 @@ void write_file(const fs::path& path, const SweepFile& sweep) {
     for (const auto& c : sweep.cases) write_case(g.get(), c);
   }
   file.close(object);
-}
-
-// flushes a closed file's data to the disk
-void fsync_path(const fs::path& path, int flags) {
-  const int fd = ::open(path.c_str(), flags);
-  if (fd < 0) throw std::system_error(errno, std::generic_category(), "open " + path.string());
-  const int rc = ::fsync(fd);
-  const int err = errno;
-  ::close(fd);
-  if (rc != 0) throw std::system_error(err, std::generic_category(), "fsync " + path.string());
 }
 
 // ---- reading ----------------------------------------------------------------
@@ -359,43 +350,14 @@ SweepFile read_file(hid_t file) {
 
 void write_sweep_file(const fs::path& path, const SweepFile& sweep) {
   internal::QuietHdf5 quiet;
-  // the target directory must exist and be writable before anything is made
-  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-  std::error_code ec;
-  if (!fs::exists(dir, ec)) {
-    throw InputError("--out", 0, "", fmt::format("directory '{}' does not exist", dir.string()));
-  }
-  if (!fs::is_directory(dir, ec)) {
-    throw InputError("--out", 0, "", fmt::format("'{}' is not a directory", dir.string()));
-  }
-  if (::access(dir.c_str(), W_OK) != 0) {
-    throw InputError("--out", 0, "", fmt::format("directory '{}' is not writable", dir.string()));
-  }
-  if (path.filename().empty() || fs::is_directory(path, ec)) {
-    throw InputError("--out", 0, "", fmt::format("'{}' is a directory, not a file", path.string()));
-  }
-
-  // a temporary file beside the target, flushed, then renamed over it:
-  // readers see the old file or the complete new one, never a part
-  const fs::path tmp =
-      dir / fmt::format(".{}.tmp.{}", path.filename().string(), static_cast<long>(::getpid()));
-  try {
-    write_file(tmp, sweep);
-    fsync_path(tmp, O_RDONLY);
-    fs::rename(tmp, path);
-  } catch (const Hdf5Error& e) {
-    fs::remove(tmp, ec);
-    throw std::runtime_error(
-        fmt::format("{}: cannot write the sweep: {}", path.string(), e.what()));
-  } catch (...) {
-    fs::remove(tmp, ec);
-    throw;
-  }
-  // make the rename itself durable; the file is complete either way
-  try {
-    fsync_path(dir, O_RDONLY | O_DIRECTORY);
-  } catch (const std::system_error&) {
-  }
+  (void)write_atomically("--out", path, [&](const fs::path& tmp) {
+    try {
+      write_file(tmp, sweep);
+    } catch (const Hdf5Error& e) {
+      throw std::runtime_error(
+          fmt::format("{}: cannot write the sweep: {}", path.string(), e.what()));
+    }
+  });
 }
 
 SweepFile read_sweep_file(const fs::path& path) {

@@ -11,6 +11,7 @@
 #include "report_figures.hpp"
 #include "report_files.hpp"
 #include "report_html.hpp"
+#include "planarbench/output_file.hpp"
 #include "report_mapping.hpp"
 #include "report_markdown.hpp"
 #include "report_provenance.hpp"
@@ -66,6 +67,19 @@ std::vector<std::pair<std::string, std::string>> sweep_parameters(const fs::path
   return internal::read_file_provenance(path).parameters;
 }
 
+// An existing report folder must be a folder whose pages, if present, are
+// regular files (a FIFO named report.html would otherwise be replaced): checked
+// before anything is read or computed.
+void check_report_folder(const fs::path& dir) {
+  std::error_code ec;
+  const auto status = fs::status(dir, ec);
+  if (!fs::exists(status)) return;  // created later, with everything in it new
+  if (!fs::is_directory(status)) {
+    throw InputError("--out", 0, dir.string(), "exists and is not a folder; give a report folder");
+  }
+  for (const char* page : {"report.html", "report.md"}) (void)output_target("--out", dir / page);
+}
+
 }  // namespace
 
 ReportSummary write_report(const ReportOptions& options) {
@@ -74,6 +88,7 @@ ReportSummary write_report(const ReportOptions& options) {
   if (options.results.empty() && options.sweep.empty()) {
     throw InputError("report", 0, "", "give a results file, --sweep FILE, or both");
   }
+  check_report_folder(options.out_dir);
   // without a results file the report is the work-precision section alone
   const bool with_results = !options.results.empty();
   const ResultsFile results = with_results ? read_results_file(options.results) : ResultsFile{};

@@ -5,30 +5,15 @@
 #include <system_error>
 
 #include "planarbench/errors.hpp"
+#include "planarbench/output_file.hpp"
 
 namespace pb::internal {
 
 namespace fs = std::filesystem;
 
 void write_text_atomically(const fs::path& path, const std::string& text) {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw InputError(path.string(), 0, "", "cannot be written");
-    f.write(text.data(), static_cast<std::streamsize>(text.size()));
-    if (!f.flush()) {
-      f.close();
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      throw InputError(path.string(), 0, "", "write failed (disk full?)");
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw InputError(path.string(), 0, "", "cannot be replaced: " + ec.message());
-  }
+  // the report's files are all under its --out folder
+  (void)pb::write_text_atomically("--out", path, text);
 }
 
 std::string read_text_file(const fs::path& path) {

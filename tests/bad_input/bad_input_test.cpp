@@ -251,12 +251,15 @@ const fs::path& good_results() {
 }
 
 // every file and folder under `dir` with its size: what planarbench must not change
-std::map<std::string, std::uintmax_t> listing(const fs::path& dir) {
-  std::map<std::string, std::uintmax_t> out;
+// every entry of the folder: its type (not following links: a FIFO renamed
+// over is a change) and a regular file's size
+std::map<std::string, std::pair<int, std::uintmax_t>> listing(const fs::path& dir) {
+  std::map<std::string, std::pair<int, std::uintmax_t>> out;
   for (const auto& e : fs::recursive_directory_iterator(dir)) {
     std::error_code ec;
-    const auto size = e.is_regular_file(ec) ? e.file_size(ec) : 0;
-    out[fs::relative(e.path(), dir).string()] = size;
+    const auto type = static_cast<int>(e.symlink_status(ec).type());
+    const auto size = e.is_regular_file(ec) && !e.is_symlink(ec) ? e.file_size(ec) : 0;
+    out[fs::relative(e.path(), dir).string()] = {type, size};
   }
   return out;
 }
@@ -285,7 +288,8 @@ TEST_P(BadInput, IsRefusedWithOneClearLineAndNoFiles) {
       {"{cases}", PB_CASES_DIR},           {"{tmp}", tmp.string()},
       {"{out}", (tmp / "out.h5").string()}, {"{good}", (tmp / "good.h5").string()},
       {"{big}", (tmp / "big.toml").string()}, {"{readonly}", (tmp / "readonly").string()},
-      {"{case}", (tmp / "case.toml").string()}};
+      {"{case}", (tmp / "case.toml").string()}, {"{fifo}", (tmp / "fifo").string()},
+      {"{fifolink}", (tmp / "fifolink").string()}, {"{dangling}", (tmp / "dangling").string()}};
   for (const auto& s : e.setup) {
     if (s == "good_results") {
       ASSERT_FALSE(good_results().empty()) << "could not make a valid results file";
@@ -302,6 +306,14 @@ TEST_P(BadInput, IsRefusedWithOneClearLineAndNoFiles) {
       fs::permissions(tmp / "readonly", fs::perms::owner_read | fs::perms::owner_exec |
                                             fs::perms::group_read | fs::perms::group_exec |
                                             fs::perms::others_read | fs::perms::others_exec);
+    } else if (s == "fifo") {
+      // a FIFO, a symbolic link to it, and a link to nothing: outputs that a
+      // rename would replace with a regular file (issue 15)
+      ASSERT_EQ(::mkfifo((tmp / "fifo").c_str(), 0600), 0) << std::strerror(errno);
+      fs::create_symlink(tmp / "fifo", tmp / "fifolink");
+      fs::create_symlink(tmp / "no_such_file.h5", tmp / "dangling");
+      fs::create_directories(tmp / "report");
+      ASSERT_EQ(::mkfifo((tmp / "report" / "report.html").c_str(), 0600), 0);
     } else {
       FAIL() << "unknown setup '" << s << "'";
     }

@@ -63,5 +63,32 @@ TEST(EpisodeTracker, SeparatedClosesAtThatStep) {
   EXPECT_FALSE(tr.in_contact(2, 3));
 }
 
+// An impact inside one step (apart at both ends, an impulse within): one
+// closed episode at the time the approach closes the gap, duration 0, force
+// impulse / step. Values chosen exact in binary: gap 0.25 m at 1 m/s from
+// t = 2 s is t = 2.25 s.
+TEST(EpisodeTracker, ImpactWithinAStepIsAnEpisode) {
+  EpisodeTracker tr;
+  tr.observe(2.0, 0, 1, -0.25, 1.0, 0.0);
+  tr.record_within_step(2.0, 3.0, 0, 1, 0.25, 1.0, 0.5, 1.5);
+  EXPECT_FALSE(tr.in_contact(0, 1));
+  const auto eps = tr.episodes();
+  ASSERT_EQ(eps.size(), 1u);
+  EXPECT_EQ(eps[0].onset_time_s, 2.25);
+  EXPECT_EQ(eps[0].offset_time_s, 2.25);
+  EXPECT_EQ(eps[0].restitution, 0.5);
+  EXPECT_EQ(eps[0].impulse_ns, 1.5);
+  EXPECT_EQ(eps[0].peak_force_n, 1.5);
+  EXPECT_EQ(eps[0].max_penetration_m, 0.0);
+  // a gap the approach does not close within the step, or an unknown one:
+  // the step's end, or its start
+  tr.record_within_step(4.0, 5.0, 0, 1, 7.0, 1.0, 0.5, 1.0);
+  tr.record_within_step(6.0, 7.0, 0, 1, std::nan(""), 1.0, 0.5, 1.0);
+  const auto all = tr.episodes();
+  ASSERT_EQ(all.size(), 3u);
+  EXPECT_EQ(all[1].onset_time_s, 5.0);
+  EXPECT_EQ(all[2].onset_time_s, 6.0);
+}
+
 }  // namespace
 }  // namespace pb

@@ -397,7 +397,7 @@ TEST_F(ResultsFileTest, TargetThatIsADirectoryFailsCleanly) {
   const fs::path p = dir_ / "r.h5";
   fs::create_directory(p);
   const std::string msg = input_error_message([&] { write_results_file(p, sample_results()); });
-  EXPECT_NE(msg.find("is a directory"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("is a folder, not a file"), std::string::npos) << msg;
   EXPECT_TRUE(fs::is_directory(p));
   EXPECT_EQ(listing(), std::vector<std::string>{"r.h5"});
 }

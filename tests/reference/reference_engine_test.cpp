@@ -186,5 +186,32 @@ TEST(ReferenceEngine, AdvanceBeforeBuildIsAnEngineError) {
   EXPECT_THROW(e->advance_to(1.0), EngineError);
 }
 
+// Issue 15: a state the geometry cannot represent is `diverged` with the
+// reason, never `ok`. Dropped at 1e4 m/s the ball's centre goes under the
+// ground line within the first contact (the Kelvin-Voigt truth's maximum
+// depth is v / omega = 8660 / 100 = 87 m against a 0.5 m radius); on sliding
+// at 3 s the disk has slid g sin45 t^2 / 2 = 31 m, past the 20 m segment of
+// outline points that represents the ground (extent 20 m, centred on 0).
+TEST(ReferenceEngine, StatesPastTheGeometryAreDivergedWithTheReason) {
+  Case fast = load("falling_ball");
+  fast.bodies[1].velocity_mps = Vec2(0.0, -1e4);
+  auto e = make_reference_engine();
+  const RunResult r = run_engine(*e, fast, SettingsOverrides{});
+  EXPECT_EQ(r.status, RunStatus::diverged);
+  EXPECT_NE(r.reason.find("penetration beyond what the geometry represents"), std::string::npos)
+      << r.reason;
+  EXPECT_NE(r.reason.find("'ball'"), std::string::npos) << r.reason;
+  EXPECT_LT(r.diverged_at_s, 0.01) << "within the first contact";
+
+  Case slide = load("sliding");
+  slide.duration_s = 3.0;
+  auto e2 = make_reference_engine();
+  const RunResult r2 = run_engine(*e2, slide, SettingsOverrides{});
+  EXPECT_EQ(r2.status, RunStatus::diverged);
+  EXPECT_NE(r2.reason.find("past the end of the 20 m segment"), std::string::npos) << r2.reason;
+  // 10 m along the slope (half the segment) is reached at sqrt(2 10 / (g sin45)) = 1.70 s
+  EXPECT_GT(r2.diverged_at_s, 1.7);
+}
+
 }  // namespace
 }  // namespace pb

@@ -22,6 +22,15 @@ class EpisodeTracker {
   // Marks a step at which the pair was not seen at all (no contact reported):
   // closes an open episode of that pair at t_s.
   void observe_separated(double t_s, int body_a, int body_b, double normal_speed_mps);
+  // Records an impact the observations cannot show: the pair was apart at
+  // both ends of the step [t0_s, t1_s] and a contact impulse acted within it
+  // (a rigid engine's continuous collision resolves a fast impact inside one
+  // step: Box2D's time of impact). A closed episode of zero duration at the
+  // time the approach speed closes gap0_m (the step's start when unknown),
+  // with the step's impulse, peak force impulse / step, the normal speeds
+  // before (approach, > 0) and after (separation, > 0), no penetration.
+  void record_within_step(double t0_s, double t1_s, int body_a, int body_b, double gap0_m,
+                          double approach_mps, double separation_mps, double impulse_ns);
   // pairs currently in contact
   [[nodiscard]] bool in_contact(int body_a, int body_b) const;
   [[nodiscard]] std::vector<ContactEpisode> episodes() const;  // closed + open ones

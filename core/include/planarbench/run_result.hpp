@@ -2,12 +2,15 @@
 // /runs/<case>/<engine>/ in the results file (SPEC §5).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "planarbench/engine.hpp"
 
 namespace pb {
+
+class RunSpool;  // planarbench/run_spool.hpp
 
 enum class RunStatus { ok, diverged, unsupported };
 
@@ -45,6 +48,10 @@ struct RunResult {
   std::vector<BodyTrajectory> bodies;      // moving bodies only
   std::vector<ContactRow> contacts;
   std::vector<ContactEpisode> events;
+  // set when the samples went to disk as the run proceeded (RunOptions::
+  // spool_dir): `bodies` and `contacts` are then empty and the results
+  // writer takes the trajectories and the contacts table from here
+  std::shared_ptr<const RunSpool> spool;
 };
 
 // Everything one `planarbench run` writes: per case, the case text and overrides.

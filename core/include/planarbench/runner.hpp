@@ -1,6 +1,7 @@
 // Drives an engine through a case onto the common output grid.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <memory>
 
@@ -14,6 +15,10 @@ namespace pb {
 struct RunOptions {
   // called now and then with the fraction of simulated time done, [0, 1]
   std::function<void(double fraction)> progress;
+  // when set, the samples go to a RunSpool in this folder as the run
+  // proceeds (memory bounded whatever the run's length; run_spool.hpp);
+  // empty: they are kept in RunResult's vectors
+  std::filesystem::path spool_dir;
 };
 
 // Builds `engine` for case `c`, advances it to every output time, samples body

@@ -1,14 +1,65 @@
 #include "planarbench/reference/contact_dynamics.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <utility>
+#include <variant>
+
+#include <fmt/format.h>
 #include <string>
 
+#include "planarbench/convex_pieces.hpp"
+#include "planarbench/ellipse_distance.hpp"
 #include "planarbench/reference/unclamped_force.hpp"
 
 namespace pb {
 
+namespace {
+
+// m, the distance from a shape's origin to its farthest material point
+double reach_m(const Shape& shape) {
+  if (const auto* c = std::get_if<Circle>(&shape)) return c->radius_m;
+  if (const auto* e = std::get_if<Ellipse>(&shape)) return std::max(e->semi_axis_a_m, e->semi_axis_b_m);
+  if (const auto* p = std::get_if<Polygon>(&shape)) {
+    double r = 0.0;
+    for (const Vec2& v : p->points_m) r = std::max(r, v.norm());
+    return r;
+  }
+  return std::numeric_limits<double>::infinity();  // a half-plane
+}
+
+// m, how deep body-frame point p lies inside the shape: > 0 inside, <= 0 not
+double depth_inside(const Shape& shape, const Vec2& p) {
+  if (const auto* c = std::get_if<Circle>(&shape)) return c->radius_m - p.norm();
+  if (const auto* e = std::get_if<Ellipse>(&shape)) {
+    return -closest_point_on_ellipse(e->semi_axis_a_m, e->semi_axis_b_m, p).signed_distance_m;
+  }
+  if (std::holds_alternative<HalfPlane>(shape)) return -p.y();
+  // a simple polygon: inside by the even-odd crossing rule, the depth is the
+  // distance to the nearest edge
+  const auto& v = std::get<Polygon>(shape).points_m;
+  bool inside = false;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
+    const Vec2& a = v[j];
+    const Vec2& b = v[i];
+    if ((a.y() > p.y()) != (b.y() > p.y()) &&
+        p.x() < a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y())) {
+      inside = !inside;
+    }
+    const Vec2 ab = b - a;
+    const double s = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+    nearest = std::min(nearest, (a + s * ab - p).norm());
+  }
+  return inside ? nearest : -nearest;
+}
+
+}  // namespace
+
 ContactDynamics::ContactDynamics(const Case& c, GeometryMode mode, DetectionMode detection)
-    : model_(c), pairs_(c.contacts) {
+    : model_(c), pairs_(c.contacts), mode_(mode) {
   const int nb = static_cast<int>(c.bodies.size());
   for (const auto& p : pairs_) {
     if (p.body_a < 0 || p.body_a >= nb || p.body_b < 0 || p.body_b >= nb || p.body_a == p.body_b) {
@@ -17,6 +68,13 @@ ContactDynamics::ContactDynamics(const Case& c, GeometryMode mode, DetectionMode
     geometry_.push_back(std::make_unique<PairGeometry>(c.bodies[static_cast<std::size_t>(p.body_a)],
                                                        c.bodies[static_cast<std::size_t>(p.body_b)],
                                                        mode, detection));
+  }
+  bodies_ = c.bodies;
+  for (const Body& b : bodies_) {
+    reach_m_.push_back(reach_m(b.shape));
+    convex_.push_back(!std::holds_alternative<HalfPlane>(b.shape) &&
+                      (!std::holds_alternative<Polygon>(b.shape) ||
+                       is_convex_ccw(std::get<Polygon>(b.shape).points_m)));
   }
   modes_.assign(pairs_.size(), PairMode{});
   last_.assign(pairs_.size(), PairEvaluation{});
@@ -89,6 +147,42 @@ double ContactDynamics::energy_j(const Eigen::VectorXd& y) const {
 
 double ContactDynamics::joint_violation_m(const Eigen::VectorXd& y) const {
   return model_.joint_violation_m(y.head(coordinates()));
+}
+
+std::string ContactDynamics::beyond_geometry(const Eigen::VectorXd& y) const {
+  const auto q = y.head(coordinates());
+  for (const ContactPair& p : pairs_) {
+    for (const auto& [self, other] : {std::pair{p.body_a, p.body_b}, std::pair{p.body_b, p.body_a}}) {
+      const auto si = static_cast<std::size_t>(self);
+      const auto oi = static_cast<std::size_t>(other);
+      if (bodies_[si].fixed || !convex_[si]) continue;
+      const Pose ps = model_.pose(self, q);
+      const Pose po = model_.pose(other, q);
+      const Vec2 d = ps.position_m - po.position_m;
+      if (d.norm() >= reach_m_[oi]) continue;  // cannot be inside: no shape test
+      const Vec2 local = po.rotation().transpose() * d;
+      const double depth = depth_inside(bodies_[oi].shape, local);
+      if (depth <= 0.0) continue;
+      const auto* plane = std::get_if<HalfPlane>(&bodies_[oi].shape);
+      if (plane != nullptr && mode_ == GeometryMode::outline &&
+          std::abs(local.x()) > 0.5 * plane->extent_m) {
+        return fmt::format(
+            "body '{}' went past the end of the {:.6g} m segment of outline points that "
+            "represents half-plane '{}' (contact '{}'; raise its extent): its centre of mass is "
+            "{:.6g} m along the surface from the segment's middle and {:.6g} m below it",
+            bodies_[si].name, plane->extent_m, bodies_[oi].name, p.name, std::abs(local.x()),
+            depth);
+      }
+      {
+        return fmt::format(
+            "penetration beyond what the geometry represents: the centre of mass of body '{}' "
+            "is {:.6g} m inside body '{}' (contact '{}'); the contact law does not hold that "
+            "deep and the outlines no longer cross where the bodies overlap",
+            bodies_[si].name, depth, bodies_[oi].name, p.name);
+      }
+    }
+  }
+  return {};
 }
 
 }  // namespace pb

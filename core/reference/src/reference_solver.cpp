@@ -340,6 +340,9 @@ void ReferenceSolver::accept(double h, std::optional<double> exact_end) {
   if (stats_.steps > kMaxSteps) {
     throw EngineError(fmt::format("reference: more than {} steps by t = {:.15g} s", kMaxSteps, t_));
   }
+  if (const std::string why = sys_.beyond_geometry(y_); !why.empty()) {
+    throw EngineError(fmt::format("reference: {} at t = {:.15g} s", why, t_));
+  }
   stats_.constraint_drift_m = std::max(stats_.constraint_drift_m, sys_.joint_violation_m(y_));
 }
 

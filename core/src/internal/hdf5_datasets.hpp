@@ -102,14 +102,21 @@ inline bool write_encoded_chunks(const Hid& d, hid_t file_type, hid_t mem_type, 
 // creates dataset `name` in loc and writes buf (nothing to write for 0 rows);
 // a chunked dataset goes through `writer` when given (compressed on its
 // threads, written later: writer->finish() before the file is closed)
-inline Hid create_and_write(hid_t loc, const char* name, hid_t file_type, hid_t mem_type, int rank,
-                            const hsize_t* dims, const void* buf, ChunkWriter* writer) {
+// creates dataset `name` in loc of shape dims[0..rank) (nothing written)
+inline Hid create_dataset(hid_t loc, const char* name, hid_t file_type, int rank,
+                          const hsize_t* dims) {
   const std::string object = object_path(loc) + "/" + name;
   Hid space = owned_space(H5Screate_simple(rank, dims, nullptr), object, "cannot create a space");
   Hid dcpl = dataset_properties(rank, dims, object);
-  Hid d = owned_dataset(
+  return owned_dataset(
       H5Dcreate2(loc, name, file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT), object,
       "cannot create the dataset");
+}
+
+inline Hid create_and_write(hid_t loc, const char* name, hid_t file_type, hid_t mem_type, int rank,
+                            const hsize_t* dims, const void* buf, ChunkWriter* writer) {
+  const std::string object = object_path(loc) + "/" + name;
+  Hid d = create_dataset(loc, name, file_type, rank, dims);
   if (dims[0] > kChunkRows &&
       write_encoded_chunks(d, file_type, mem_type, rank, dims, buf, writer, object)) {
     return d;
@@ -225,13 +232,8 @@ inline Hid table_type(const TableLayout& layout, bool in_file, const std::string
   return t;
 }
 
-// writes rows (an array of n records laid out as `layout`) with unit and fields
-inline void write_table(hid_t loc, const char* name, const TableLayout& layout, const void* rows,
-                        hsize_t n, ChunkWriter* writer = nullptr) {
-  const std::string object = object_path(loc) + "/" + name;
-  Hid file_type = table_type(layout, true, object);
-  Hid mem_type = table_type(layout, false, object);
-  Hid d = create_and_write(loc, name, file_type.get(), mem_type.get(), 1, &n, rows, writer);
+// a table's `unit` and `fields` attributes, one entry per field
+inline void write_table_attributes(const Hid& d, const TableLayout& layout) {
   std::vector<std::string> units, fields;
   for (const auto& f : layout.fields) {
     units.emplace_back(f.unit);
@@ -239,6 +241,16 @@ inline void write_table(hid_t loc, const char* name, const TableLayout& layout, 
   }
   write_string_array_attribute(d.get(), "unit", units);
   write_string_array_attribute(d.get(), "fields", fields);
+}
+
+// writes rows (an array of n records laid out as `layout`) with unit and fields
+inline void write_table(hid_t loc, const char* name, const TableLayout& layout, const void* rows,
+                        hsize_t n, ChunkWriter* writer = nullptr) {
+  const std::string object = object_path(loc) + "/" + name;
+  Hid file_type = table_type(layout, true, object);
+  Hid mem_type = table_type(layout, false, object);
+  Hid d = create_and_write(loc, name, file_type.get(), mem_type.get(), 1, &n, rows, writer);
+  write_table_attributes(d, layout);
   d.close(object);
 }
 
