@@ -232,54 +232,74 @@ int run_sweep(const SweepOptionsCli& opt, int argc, char** argv) {
     });
   }
 
-  // ---- every rung, longest first; errors computed as each run ends ----
-  std::vector<RungTask> tasks;
-  std::vector<SchedulerTask> plan;
+  // ---- every series, longest first, its rungs coarse to fine until its
+  // error is flat (ladder_is_flat); errors computed as each run ends ----
+  std::vector<RungTask> tasks;  // every planned rung, in (case, series, rung) order
+  std::vector<std::size_t> first_task;  // per series task: index of its first rung
+  std::vector<SchedulerTask> plan;      // one per series
+  std::vector<std::pair<std::size_t, std::size_t>> series_tasks;  // (case, series)
   for (std::size_t ci = 0; ci < plans.size(); ++ci) {
     for (std::size_t si = 0; si < plans[ci].series.size(); ++si) {
       const SeriesPlan& s = plans[ci].series[si];
+      double cost = 0.0;
+      first_task.push_back(tasks.size());
       for (std::size_t ri = 0; ri < s.values.size(); ++ri) {
         tasks.push_back(RungTask{ci, si, ri});
-        plan.push_back(SchedulerTask{rung_cost(s, s.values[ri], plans[ci].c.duration_s),
-                                     exclusive_group(s.engine)});
+        cost += rung_cost(s, s.values[ri], plans[ci].c.duration_s);
       }
+      series_tasks.emplace_back(ci, si);
+      plan.push_back(SchedulerTask{cost, exclusive_group(s.engine)});
     }
   }
   std::vector<SweepRung> rungs(tasks.size());
+  std::vector<bool> ran(tasks.size(), false);
   Progress progress(opt.quiet, tasks.size());
   const auto t0 = std::chrono::steady_clock::now();
-  run_parallel(plan, opt.jobs, [&](std::size_t i) {
-    const RungTask& task = tasks[i];
-    const CasePlan& p = plans[task.case_index];
-    const SeriesPlan& s = p.series[task.series_index];
-    const double value = s.values[task.rung_index];
-    const std::string what = fmt::format("{} x {}", p.c.name, rung_label(s, value));
-    progress.print(i, what + " ...");
-    const SettingsOverrides settings = rung_overrides(p.base, s, value);
-    // repeats: the same bits each time (deterministic engines), so the first
-    // run's trajectory gives the error and the median of the wall times the cost
-    std::vector<double> walls;
-    RunResult first;
-    for (int k = 0; k < opt.repeat; ++k) {
-      auto engine = make_engine(s.engine);
-      RunResult r = run_engine(*engine, p.c, settings);
-      walls.push_back(r.wall_time_s);
-      if (k == 0) first = std::move(r);
+  run_parallel(plan, opt.jobs, [&](std::size_t series) {
+    const auto [ci, si] = series_tasks[series];
+    const CasePlan& p = plans[ci];
+    const SeriesPlan& s = p.series[si];
+    std::vector<double> errors;
+    for (std::size_t ri = 0; ri < s.values.size(); ++ri) {
+      const std::size_t i = first_task[series] + ri;
+      const double value = s.values[ri];
+      const std::string what = fmt::format("{} x {}", p.c.name, rung_label(s, value));
+      progress.print(i, what + " ...");
+      const SettingsOverrides settings = rung_overrides(p.base, s, value);
+      // repeats: the same bits each time (deterministic engines), so the first
+      // run's trajectory gives the error and the median of the wall times the cost
+      std::vector<double> walls;
+      RunResult first;
+      for (int k = 0; k < opt.repeat; ++k) {
+        auto engine = make_engine(s.engine);
+        RunResult r = run_engine(*engine, p.c, settings);
+        walls.push_back(r.wall_time_s);
+        if (k == 0) first = std::move(r);
+      }
+      SweepRung& out = rungs[i];
+      ran[i] = true;
+      out.value = value;
+      out.wall_time_s = median(walls);
+      out.steps = first.steps;
+      out.status = first.status;
+      out.reason = first.status == RunStatus::ok ? "" : first.reason;
+      if (first.status == RunStatus::diverged && first.diverged_at_s >= 0.0) {
+        out.reason = fmt::format("at t = {:.6g} s: {}", first.diverged_at_s, first.reason);
+      }
+      out.position_error_m = sweep_position_error(p.c, first, truths[ci]);
+      std::string status = run_status_name(out.status);
+      if (out.status != RunStatus::ok) status += ": " + out.reason;
+      progress.print(i, fmt::format("{} {} ({:.3f} s, {} steps, error {:.3g} m)", what, status,
+                                    out.wall_time_s, out.steps, out.position_error_m));
+      errors.push_back(out.status == RunStatus::ok ? out.position_error_m : std::nan(""));
+      if (ladder_is_flat(errors) && ri + 1 < s.values.size()) {
+        progress.print(i, fmt::format("{} x {}: error flat ({:.3g} m after {:.3g} m), the {} "
+                                      "finer rung(s) not run",
+                                      p.c.name, s.name, errors.back(),
+                                      errors[errors.size() - 2], s.values.size() - ri - 1));
+        break;
+      }
     }
-    SweepRung& out = rungs[i];
-    out.value = value;
-    out.wall_time_s = median(walls);
-    out.steps = first.steps;
-    out.status = first.status;
-    out.reason = first.status == RunStatus::ok ? "" : first.reason;
-    if (first.status == RunStatus::diverged && first.diverged_at_s >= 0.0) {
-      out.reason = fmt::format("at t = {:.6g} s: {}", first.diverged_at_s, first.reason);
-    }
-    out.position_error_m = sweep_position_error(p.c, first, truths[task.case_index]);
-    std::string status = run_status_name(out.status);
-    if (out.status != RunStatus::ok) status += ": " + out.reason;
-    progress.print(i, fmt::format("{} {} ({:.3f} s, {} steps, error {:.3g} m)", what, status,
-                                  out.wall_time_s, out.steps, out.position_error_m));
   });
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -291,6 +311,7 @@ int run_sweep(const SweepOptionsCli& opt, int argc, char** argv) {
   file.quick = opt.quick;
   file.dt_ladder = dts;
   file.rtol_ladder = rtols;
+  file.ladder_stop_rule = ladder_stop_rule();
   std::size_t diverged = 0;
   for (std::size_t ci = 0; ci < plans.size(); ++ci) {
     const CasePlan& p = plans[ci];
@@ -313,7 +334,7 @@ int run_sweep(const SweepOptionsCli& opt, int argc, char** argv) {
       out.default_value = p.defaults[si];
       out.fixed_settings = fixed_settings_json(s);
       for (std::size_t i = 0; i < tasks.size(); ++i) {
-        if (tasks[i].case_index != ci || tasks[i].series_index != si) continue;
+        if (tasks[i].case_index != ci || tasks[i].series_index != si || !ran[i]) continue;
         diverged += rungs[i].status == RunStatus::diverged;
         out.rungs.push_back(rungs[i]);
       }
@@ -326,7 +347,8 @@ int run_sweep(const SweepOptionsCli& opt, int argc, char** argv) {
   int truth_failed = 0;
   for (const auto& t : truths) truth_failed += t.status != RunStatus::ok;
   if (!opt.quiet) {
-    std::fprintf(stderr, "wrote %s (%zu rungs in %.1f s%s%s)\n", opt.out.c_str(), tasks.size(),
+    std::fprintf(stderr, "wrote %s (%zu rungs in %.1f s%s%s)\n", opt.out.c_str(),
+                 static_cast<std::size_t>(std::count(ran.begin(), ran.end(), true)),
                  elapsed, diverged ? fmt::format(", {} diverged", diverged).c_str() : "",
                  truth_failed ? fmt::format(", {} truth runs failed", truth_failed).c_str() : "");
   }

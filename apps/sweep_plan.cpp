@@ -201,4 +201,23 @@ double rung_cost(const SeriesPlan& s, double value, double duration_s) {
   return duration_s / value * per_step;
 }
 
+bool ladder_is_flat(const std::vector<double>& errors) {
+  if (errors.empty() || !std::isfinite(errors.back())) return false;
+  std::vector<double> ok;
+  for (auto it = errors.rbegin(); it != errors.rend() && ok.size() < 3; ++it) {
+    if (std::isfinite(*it)) ok.push_back(*it);
+  }
+  if (ok.size() < 3) return false;
+  auto close = [](double x, double y) {
+    return std::abs(x - y) <= kFlatTolerance * std::min(x, y);
+  };
+  return close(ok[0], ok[1]) && close(ok[1], ok[2]);
+}
+
+const char* ladder_stop_rule() {
+  return "each ladder runs coarse to fine and stops once its last three rungs that ran ok "
+         "agree within 10 % (each change at most a tenth of the smaller error): a floor that "
+         "finer rungs would only measure again; diverged rungs never stop a ladder";
+}
+
 }  // namespace pb::cli

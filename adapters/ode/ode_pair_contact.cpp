@@ -57,13 +57,6 @@ Vec2 contact_midpoint(const dContactGeom& g) {
 PairCollider::PairCollider(const Case& c, const OdeWorld& world)
     : case_(&c), world_(&world), buffer_(static_cast<std::size_t>(geom_pair_capacity(c))) {
   const std::size_t n = c.bodies.size();
-  pair_of_.assign(n * n, -1);
-  for (std::size_t p = 0; p < c.contacts.size(); ++p) {
-    const auto a = static_cast<std::size_t>(c.contacts[p].body_a);
-    const auto b = static_cast<std::size_t>(c.contacts[p].body_b);
-    pair_of_[a * n + b] = static_cast<int>(p);
-    pair_of_[b * n + a] = static_cast<int>(p);
-  }
   int pieces = 1;
   for (std::size_t i = 0; i < n; ++i) pieces = std::max(pieces, world.geom_count(static_cast<int>(i)));
   capacity_ = geom_pair_capacity(c) * pieces * pieces;
@@ -80,21 +73,19 @@ void PairCollider::collide(std::vector<PairContact>& out) {
     pc.contacts_reported = 0;
     pc.deepest = -1;
   }
-  out_ = &out;
-  dSpaceCollide(world_->space(), this, &PairCollider::near_callback);
-  out_ = nullptr;
+  // the case lists its pairs: dCollide on each of them, every piece of one
+  // body against every piece of the other (ODE's manual: dCollide may be
+  // called directly on two geoms). dSpaceCollide would also find them, after
+  // recomputing every moved geom's bounding box (dxConvex::computeAABB walks
+  // all vertices of a prism: a third of dual_pendulum x ode) to test pairs the
+  // case does not list.
+  for (std::size_t p = 0; p < case_->contacts.size(); ++p) {
+    const ContactPair& cp = case_->contacts[p];
+    for (const dGeomID g : world_->geoms(cp.body_a)) {
+      for (const dGeomID h : world_->geoms(cp.body_b)) collide_geoms(static_cast<int>(p), g, h, out[p]);
+    }
+  }
   for (std::size_t p = 0; p < out.size(); ++p) summarise(static_cast<int>(p), out[p]);
-}
-
-void PairCollider::near_callback(void* data, dGeomID o1, dGeomID o2) {
-  auto* self = static_cast<PairCollider*>(data);
-  const auto n = self->case_->bodies.size();
-  const auto i = static_cast<std::size_t>(OdeWorld::body_index_of(o1));
-  const auto j = static_cast<std::size_t>(OdeWorld::body_index_of(o2));
-  // only the case's contact pairs collide (pieces of one body never)
-  const int pair = self->pair_of_[i * n + j];
-  if (pair < 0) return;
-  self->collide_geoms(pair, o1, o2, (*self->out_)[static_cast<std::size_t>(pair)]);
 }
 
 void PairCollider::collide_geoms(int pair, dGeomID g, dGeomID h, PairContact& out) {

@@ -1,6 +1,6 @@
-// ODE's narrow phase for the case's contact pairs only: dSpaceCollide with a
-// near callback that skips every geom pair the case does not list, and every
-// contact dCollide reports for a listed pair (a body may be several convex
+// ODE's narrow phase for the case's contact pairs only: dCollide on every geom
+// pair of each listed pair (no space traversal), and every contact dCollide
+// reports for it (a body may be several convex
 // pieces, each its own geom), mapped to the case's conventions (normal from
 // body_a to body_b). One pair's contacts are one contact of the case (SPEC
 // §1, one force per pair): its penetration is the deepest contact's depth,
@@ -36,7 +36,7 @@ class PairCollider {
  public:
   PairCollider(const Case& c, const OdeWorld& world);
 
-  // dSpaceCollide over the world's space; out[p] is pair p's contact
+  // dCollide over the case's pairs; out[p] is pair p's contact
   // (touching = false when its geoms do not overlap). Allocation-free after
   // the first call.
   void collide(std::vector<PairContact>& out);
@@ -44,16 +44,13 @@ class PairCollider {
   [[nodiscard]] int capacity() const { return capacity_; }
 
  private:
-  static void near_callback(void* data, dGeomID o1, dGeomID o2);
   void collide_geoms(int pair, dGeomID g, dGeomID h, PairContact& out);
   void summarise(int pair, PairContact& out) const;
 
   const Case* case_;
   const OdeWorld* world_;
-  std::vector<int> pair_of_;  // n x n body indices -> pair index, -1 = no pair
   std::vector<dContactGeom> buffer_;
   int capacity_ = 0;
-  std::vector<PairContact>* out_ = nullptr;
 };
 
 // Normal relative speed of body_b's and body_a's material points at `point`

@@ -100,6 +100,7 @@ void write_parameters(hid_t file, const SweepFile& s) {
   internal::write_int64_attribute(g.get(), "quick", s.quick ? 1 : 0);
   write_double_array_attribute(g.get(), "dt_ladder", s.dt_ladder);
   write_double_array_attribute(g.get(), "rtol_ladder", s.rtol_ladder);
+  internal::write_string_attribute(g.get(), "ladder_stop_rule", s.ladder_stop_rule);
 }
 
 void write_series(hid_t case_group, const SweepSeries& s, const std::string& truth) {
@@ -340,6 +341,10 @@ SweepFile read_file(hid_t file) {
     s.quick = internal::read_int64_attribute(p.get(), "quick") != 0;
     s.dt_ladder = read_double_array_attribute(p.get(), "dt_ladder");
     s.rtol_ladder = read_double_array_attribute(p.get(), "rtol_ladder");
+    // files written before the rule (issue 12) ran every rung
+    if (H5Aexists(p.get(), "ladder_stop_rule") > 0) {
+      s.ladder_stop_rule = internal::read_string_attribute(p.get(), "ladder_stop_rule");
+    }
   }
   Hid sweep = open_group(file, "sweep", " (not a planarbench sweep file)");
   for (const auto& name : child_names(sweep.get())) s.cases.push_back(read_case(sweep.get(), name));

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 
 #include "planarbench/errors.hpp"
@@ -152,6 +153,32 @@ TEST(SweepPlan, CostModelOrdersFinerAndTighterRungsLater) {
   EXPECT_GT(pb::cli::rung_cost(ref[1], 1e-4, 1.0), pb::cli::rung_cost(mj[0], 1e-4, 1.0));
   EXPECT_GT(pb::cli::rung_cost(ref[0], 1e-10, 1.0), pb::cli::rung_cost(ref[0], 1e-4, 1.0));
   EXPECT_GT(pb::cli::rung_cost(mj[0], 1e-4, 2.0), pb::cli::rung_cost(mj[0], 1e-4, 1.0));
+}
+
+}  // namespace
+
+namespace {
+
+// The ladder's stopping rule (issue 12), on hand-made error sequences: flat
+// means the last three ok rungs agree within a tenth of the smaller error.
+// Values exact in binary where the comparison is at the boundary.
+TEST(SweepPlan, LadderStopsOnceTheErrorIsFlat) {
+  using pb::cli::ladder_is_flat;
+  const double nan = std::nan("");
+  EXPECT_FALSE(ladder_is_flat({}));
+  EXPECT_FALSE(ladder_is_flat({1.0, 1.0}));             // two rungs: not yet
+  EXPECT_TRUE(ladder_is_flat({1.0, 1.0, 1.0}));         // a floor
+  EXPECT_TRUE(ladder_is_flat({8.0, 1.0, 1.0, 1.0}));    // falling, then a floor
+  EXPECT_FALSE(ladder_is_flat({1.0, 1.0, 0.5}));        // falling again
+  EXPECT_TRUE(ladder_is_flat({1.0, 1.0, 1.0625}));      // 6.25 % apart: within a tenth
+  EXPECT_FALSE(ladder_is_flat({1.0, 1.0, 1.125}));      // 12.5 % apart: not flat
+  // ODE on dual_pendulum (landed sweep): rises, pauses, falls: never flat
+  const std::vector<double> ode = {0.051, 0.12, 0.14, 0.14, 0.094, 0.026, 0.0069};
+  for (std::size_t n = 1; n <= ode.size(); ++n) {
+    EXPECT_FALSE(ladder_is_flat({ode.begin(), ode.begin() + static_cast<std::ptrdiff_t>(n)})) << n;
+  }
+  EXPECT_FALSE(ladder_is_flat({1.0, 1.0, 1.0, nan}));   // a diverged rung never stops it
+  EXPECT_TRUE(ladder_is_flat({1.0, nan, 1.0, 1.0}));    // compared over the ok rungs
 }
 
 }  // namespace

@@ -4,7 +4,9 @@
 //
 //   /parameters                       attributes: provenance as in a results file
 //                                     (build, host, UTC time, command line), and
-//                                     the sweep's repeat, quick, dt_ladder, rtol_ladder
+//                                     the sweep's repeat, quick, dt_ladder, rtol_ladder,
+//                                     ladder_stop_rule (a series has fewer rungs than
+//                                     its ladder when it stopped early)
 //   /sweep/<case>/                    attributes: case_text, case_sha256, case_path,
 //                                     overrides (JSON), duration_s, truth, truth_note
 //   /sweep/<case>/<series>/           attributes: engine, knob ("dt" or "rtol"),
@@ -67,6 +69,7 @@ struct SweepFile {
   bool quick = false;               // --quick: two rungs per series
   std::vector<double> dt_ladder;    // s
   std::vector<double> rtol_ladder;  // 1
+  std::string ladder_stop_rule;     // when a series stops before its finest rung
   std::vector<SweepCase> cases;
 };
 
