@@ -106,7 +106,25 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
   for (std::size_t ci = 0; ci < cases.size(); ++ci) {
     for (const auto& e : engines) tasks.push_back(Task{ci, e});
   }
-  std::vector<RunResult> results(tasks.size());
+  // the file's header and one group per run first; each run is written as
+  // soon as it ends, while the other workers go on (no serial tail)
+  ResultsFile layout;
+  layout.provenance = provenance(argc, argv);
+  for (const Case& c : cases) {
+    CaseRuns cr;
+    cr.case_name = c.name;
+    cr.case_text = c.source_text;
+    cr.case_path = c.source_path;
+    cr.overrides = overrides.as_given;
+    for (const auto& e : engines) {
+      RunResult slot;
+      slot.engine_name = e;
+      cr.runs.push_back(std::move(slot));
+    }
+    layout.cases.push_back(std::move(cr));
+  }
+  ResultsFileWriter writer(opt.out, layout);
+  std::vector<RunStatus> statuses(tasks.size(), RunStatus::ok);
   Progress progress(opt.quiet, tasks.size());
   std::vector<SchedulerTask> plan;
   for (const Task& t : tasks) {
@@ -134,8 +152,10 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
         ro.progress = [&](double f) { progress.fraction(i, what, f, last); };
         ro.spool_dir = out_target.parent_path().empty() ? std::filesystem::path(".")
                                                         : out_target.parent_path();
-        results[i] = run_engine(*engine, c, case_engine_settings[task.case_index], ro);
-        progress.finished(i, what, results[i]);
+        const RunResult r = run_engine(*engine, c, case_engine_settings[task.case_index], ro);
+        progress.finished(i, what, r);
+        statuses[i] = r.status;
+        writer.write_run(task.case_index, i % engines.size(), r);
       } catch (...) {
         std::lock_guard<std::mutex> lock(error_mutex);
         if (!first_error) first_error = std::current_exception();
@@ -151,25 +171,10 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
   for (auto& t : threads) t.join();
   if (first_error) std::rethrow_exception(first_error);
 
-  ResultsFile file;
-  file.provenance = provenance(argc, argv);
-  for (std::size_t ci = 0; ci < cases.size(); ++ci) {
-    CaseRuns cr;
-    cr.case_name = cases[ci].name;
-    cr.case_text = cases[ci].source_text;
-    cr.case_path = cases[ci].source_path;
-    cr.overrides = overrides.as_given;
-    for (std::size_t i = 0; i < tasks.size(); ++i) {
-      if (tasks[i].case_index == ci) cr.runs.push_back(std::move(results[i]));
-    }
-    file.cases.push_back(std::move(cr));
-  }
-  write_results_file(opt.out, file, opt.jobs);
+  writer.commit();
 
   int diverged = 0;
-  for (const auto& cr : file.cases) {
-    for (const auto& r : cr.runs) diverged += r.status == RunStatus::diverged;
-  }
+  for (const RunStatus st : statuses) diverged += st == RunStatus::diverged;
   if (!opt.quiet) {
     std::fprintf(stderr, "wrote %s (%zu runs%s)\n", opt.out.c_str(), tasks.size(),
                  diverged ? fmt::format(", {} diverged", diverged).c_str() : "");

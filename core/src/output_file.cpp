@@ -139,35 +139,45 @@ fs::path output_target(const std::string& option, const fs::path& path) {
   return target;
 }
 
-fs::path write_atomically(const std::string& option, const fs::path& path,
-                          const std::function<void(const fs::path& temporary)>& fill) {
-  const fs::path target = output_target(option, path);
-  const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  const fs::path tmp =
-      dir / fmt::format("{}{}", temporary_prefix(target), static_cast<long>(::getpid()));
+AtomicOutput::AtomicOutput(const std::string& option, const fs::path& path)
+    : option_(option), given_(path), target_(output_target(option, path)) {
+  const fs::path dir = target_.parent_path().empty() ? fs::path(".") : target_.parent_path();
+  tmp_ = dir / fmt::format("{}{}", temporary_prefix(target_), static_cast<long>(::getpid()));
+}
+
+AtomicOutput::~AtomicOutput() {
+  if (committed_) return;
   std::error_code ec;
-  try {
-    fill(tmp);
-    fsync_path(tmp, O_RDONLY);
-    // checked again just before the rename: a FIFO made meanwhile stays
-    const fs::file_status now = fs::symlink_status(target, ec);
-    if (fs::exists(now) && !fs::is_regular_file(now)) {
-      throw InputError(option, 0, path.string(),
-                       fmt::format("became {} while it was written; not replaced",
-                                   type_name(now.type())));
-    }
-    fs::rename(tmp, target);
-  } catch (...) {
-    fs::remove(tmp, ec);
-    throw;
+  fs::remove(tmp_, ec);
+}
+
+fs::path AtomicOutput::commit() {
+  const fs::path dir = target_.parent_path().empty() ? fs::path(".") : target_.parent_path();
+  fsync_path(tmp_, O_RDONLY);
+  // checked again just before the rename: a FIFO made meanwhile stays
+  std::error_code ec;
+  const fs::file_status now = fs::symlink_status(target_, ec);
+  if (fs::exists(now) && !fs::is_regular_file(now)) {
+    throw InputError(option_, 0, given_.string(),
+                     fmt::format("became {} while it was written; not replaced",
+                                 type_name(now.type())));
   }
-  remove_stale_temporaries(dir, target);
+  fs::rename(tmp_, target_);
+  committed_ = true;
+  remove_stale_temporaries(dir, target_);
   // make the rename and removals durable; the file is complete either way
   try {
     fsync_path(dir, O_RDONLY | O_DIRECTORY);
   } catch (const std::system_error&) {
   }
-  return target;
+  return target_;
+}
+
+fs::path write_atomically(const std::string& option, const fs::path& path,
+                          const std::function<void(const fs::path& temporary)>& fill) {
+  AtomicOutput out(option, path);
+  fill(out.temporary());
+  return out.commit();
 }
 
 fs::path write_text_atomically(const std::string& option, const fs::path& path,

@@ -8,6 +8,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -176,34 +179,36 @@ std::string json_text(const Json& j) {
   return j.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
-void write_run(hid_t case_group, const RunResult& r, internal::ChunkWriter* writer) {
-  Hid g = create_group(case_group, r.engine_name);
-  internal::write_string_attribute(g.get(), "engine_version", r.engine_version);
-  internal::write_string_attribute(g.get(), "status", run_status_name(r.status));
-  internal::write_string_attribute(g.get(), "reason", r.reason);
-  internal::write_double_attribute(g.get(), "diverged_at_s", r.diverged_at_s);
-  internal::write_string_attribute(g.get(), "settings", json_text(r.settings));
-  internal::write_string_attribute(g.get(), "mapping", json_text(r.mapping));
-  internal::write_string_attribute(g.get(), "extra", json_text(r.extra));
-  internal::write_double_attribute(g.get(), "wall_time_s", r.wall_time_s);
-  internal::write_int64_attribute(g.get(), "steps", static_cast<std::int64_t>(r.steps));
-  internal::write_string_array_attribute(g.get(), "body_names", r.body_names);
+// a run's attributes and datasets into its (empty) group g
+void fill_run(hid_t group, const RunResult& r, internal::ChunkWriter* writer) {
+  const hid_t g = group;
+  internal::write_string_attribute(g, "engine_version", r.engine_version);
+  internal::write_string_attribute(g, "status", run_status_name(r.status));
+  internal::write_string_attribute(g, "reason", r.reason);
+  internal::write_double_attribute(g, "diverged_at_s", r.diverged_at_s);
+  internal::write_string_attribute(g, "settings", json_text(r.settings));
+  internal::write_string_attribute(g, "mapping", json_text(r.mapping));
+  internal::write_string_attribute(g, "extra", json_text(r.extra));
+  internal::write_double_attribute(g, "wall_time_s", r.wall_time_s);
+  internal::write_int64_attribute(g, "steps", static_cast<std::int64_t>(r.steps));
+  internal::write_string_array_attribute(g, "body_names", r.body_names);
 
   if (r.spool) {
-    write_spooled_run(g.get(), *r.spool);
+    write_spooled_run(g, *r.spool);
   } else {
     // an unsupported run has no trajectories: no bodies group (SPEC §5)
     if (r.status != RunStatus::unsupported || !r.bodies.empty()) {
-      Hid bodies = create_group(g.get(), "bodies");
+      Hid bodies = create_group(g, "bodies");
       for (const auto& b : r.bodies) write_body(bodies.get(), b, writer);
     }
     // tables are always present, zero rows when empty, so readers need no special case
-    write_contacts(g.get(), r, writer);
+    write_contacts(g, r, writer);
   }
-  write_events(g.get(), r, writer);
+  write_events(g, r, writer);
 }
 
-void write_case(hid_t runs, const CaseRuns& c, internal::ChunkWriter* writer) {
+// the case's group and attributes, with one empty group per run in order
+void write_case_header(hid_t runs, const CaseRuns& c) {
   Hid g = create_group(runs, c.case_name);
   internal::write_string_attribute(g.get(), "case_text", c.case_text);
   internal::write_string_attribute(g.get(), "case_sha256", internal::sha256_hex(c.case_text));
@@ -212,26 +217,7 @@ void write_case(hid_t runs, const CaseRuns& c, internal::ChunkWriter* writer) {
   nlohmann::ordered_json overrides = nlohmann::ordered_json::object();
   for (const auto& [key, value] : c.overrides) overrides[key] = value;
   internal::write_string_attribute(g.get(), "overrides", json_text(overrides));
-  for (const auto& r : c.runs) write_run(g.get(), r, writer);
-}
-
-// the whole file at `path`; all handles are closed before the file is
-void write_file(const fs::path& path, const ResultsFile& results, int threads) {
-  const std::string object = "/";
-  Hid fcpl = internal::owned_plist(H5Pcreate(H5P_FILE_CREATE), object, "cannot create properties");
-  internal::check(H5Pset_obj_track_times(fcpl.get(), 0), object, "cannot switch off times");
-  Hid file = internal::owned_file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.get(), H5P_DEFAULT),
-                                  object, fmt::format("cannot create '{}'", path.string()));
-  // declared after the file: on failure its queued datasets close first
-  internal::ChunkWriter writer(threads);
-  write_h5md(file.get());
-  write_parameters(file.get(), results.provenance);
-  {
-    Hid runs = create_group(file.get(), "runs");
-    for (const auto& c : results.cases) write_case(runs.get(), c, &writer);
-  }
-  writer.finish();
-  file.close(object);
+  for (const auto& r : c.runs) (void)create_group(g.get(), r.engine_name);
 }
 
 // ---- reading ----------------------------------------------------------------
@@ -433,16 +419,122 @@ ResultsFile read_file(hid_t file) {
 
 }  // namespace
 
-void write_results_file(const fs::path& path, const ResultsFile& results, int threads) {
-  internal::QuietHdf5 quiet;
-  (void)write_atomically("--out", path, [&](const fs::path& tmp) {
-    try {
-      write_file(tmp, results, threads);
-    } catch (const Hdf5Error& e) {
-      throw std::runtime_error(
-          fmt::format("{}: cannot write results: {}", path.string(), e.what()));
+// ---- ResultsFileWriter ----------------------------------------------------------
+
+struct ResultsFileWriter::State {
+  internal::QuietHdf5 quiet;  // first: HDF5's printing stays off until the file is closed
+  AtomicOutput out;
+  fs::path path;
+  Hid file;
+  int threads = 1;
+  std::mutex mutex;
+  ResultsFile layout;  // provenance, case headers and engine names (no data)
+  std::vector<std::vector<std::string>> run_groups;  // per case, per run: its group's path
+  std::vector<std::vector<bool>> written;
+  State(const fs::path& p) : out("--out", p), path(p) {}
+  void open();  // creates the temporary with the header, once
+};
+
+namespace {
+// an HDF5 failure as the error the command reports
+[[noreturn]] void rethrow_as_write_error(const fs::path& path, const Hdf5Error& e) {
+  throw std::runtime_error(fmt::format("{}: cannot write results: {}", path.string(), e.what()));
+}
+}  // namespace
+
+ResultsFileWriter::ResultsFileWriter(const fs::path& path, const ResultsFile& layout, int threads)
+    : state_(std::make_unique<State>(path)) {
+  State& st = *state_;
+  st.threads = threads;
+  st.layout.provenance = layout.provenance;
+  for (const auto& c : layout.cases) {
+    CaseRuns header{c.case_name, c.case_text, c.case_path, c.overrides, {}};
+    std::vector<std::string> groups;
+    for (const auto& r : c.runs) {
+      RunResult slot;
+      slot.engine_name = r.engine_name;
+      header.runs.push_back(std::move(slot));
+      groups.push_back("/runs/" + c.case_name + "/" + r.engine_name);
     }
-  });
+    st.layout.cases.push_back(std::move(header));
+    st.run_groups.push_back(std::move(groups));
+    st.written.emplace_back(c.runs.size(), false);
+  }
+}
+
+// The temporary is made when the first run is written (or at commit): a
+// process killed while its first runs simulate leaves nothing behind; killed
+// later it leaves `.NAME.tmp.PID`, which the next write to that target removes.
+void ResultsFileWriter::State::open() {
+  if (file.get() >= 0) return;
+  try {
+    const std::string object = "/";
+    Hid fcpl =
+        internal::owned_plist(H5Pcreate(H5P_FILE_CREATE), object, "cannot create properties");
+    internal::check(H5Pset_obj_track_times(fcpl.get(), 0), object, "cannot switch off times");
+    file = internal::owned_file(
+        H5Fcreate(out.temporary().c_str(), H5F_ACC_TRUNC, fcpl.get(), H5P_DEFAULT), object,
+        fmt::format("cannot create '{}'", out.temporary().string()));
+    write_h5md(file.get());
+    write_parameters(file.get(), layout.provenance);
+    Hid runs = create_group(file.get(), "runs");
+    for (const auto& c : layout.cases) write_case_header(runs.get(), c);
+  } catch (const Hdf5Error& e) {
+    rethrow_as_write_error(path, e);
+  }
+}
+
+ResultsFileWriter::~ResultsFileWriter() = default;
+
+void ResultsFileWriter::write_run(std::size_t case_index, std::size_t run_index,
+                                  const RunResult& r) {
+  State& st = *state_;
+  std::lock_guard<std::mutex> lock(st.mutex);
+  const std::string& object = st.run_groups.at(case_index).at(run_index);
+  if (st.written[case_index][run_index]) {
+    throw std::logic_error(object + ": written twice");
+  }
+  st.open();
+  try {
+    Hid g = internal::owned_group(H5Gopen2(st.file.get(), object.c_str(), H5P_DEFAULT), object,
+                                  "cannot open the group");
+    internal::ChunkWriter writer(st.threads);
+    fill_run(g.get(), r, &writer);
+    writer.finish();
+    g.close(object);
+  } catch (const Hdf5Error& e) {
+    rethrow_as_write_error(st.path, e);
+  }
+  st.written[case_index][run_index] = true;
+}
+
+void ResultsFileWriter::commit() {
+  State& st = *state_;
+  std::lock_guard<std::mutex> lock(st.mutex);
+  for (std::size_t c = 0; c < st.written.size(); ++c) {
+    for (std::size_t k = 0; k < st.written[c].size(); ++k) {
+      if (!st.written[c][k]) {
+        throw std::logic_error(st.run_groups[c][k] + ": the run was never written");
+      }
+    }
+  }
+  st.open();
+  try {
+    st.file.close("/");
+  } catch (const Hdf5Error& e) {
+    rethrow_as_write_error(st.path, e);
+  }
+  (void)st.out.commit();
+}
+
+void write_results_file(const fs::path& path, const ResultsFile& results, int threads) {
+  ResultsFileWriter w(path, results, threads);
+  for (std::size_t c = 0; c < results.cases.size(); ++c) {
+    for (std::size_t k = 0; k < results.cases[c].runs.size(); ++k) {
+      w.write_run(c, k, results.cases[c].runs[k]);
+    }
+  }
+  w.commit();
 }
 
 ResultsFile read_results_file(const fs::path& path) {

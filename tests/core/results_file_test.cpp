@@ -537,6 +537,33 @@ TEST_F(ResultsFileTest, SameInputsGiveSameBytes) {
   EXPECT_FALSE(slurp(dir_ / "a.h5") == slurp(dir_ / "c.h5"));
 }
 
+// ---- the writer run by run (issue 12: runs written as they end) ---------------------
+
+// Runs written in any order give the file the in-order writer gives, value
+// for value, listed in the layout's order; nothing exists before the first
+// run is written; a missing run fails the commit and leaves nothing.
+TEST_F(ResultsFileTest, RunsWrittenInAnyOrderGiveTheSameDatasets) {
+  const ResultsFile in = sample_results();
+  write_results_file(dir_ / "in_order.h5", in);
+  {
+    ResultsFileWriter w(dir_ / "reversed.h5", in);
+    EXPECT_EQ(listing(), std::vector<std::string>{"in_order.h5"}) << "made before any run";
+    for (std::size_t c = in.cases.size(); c-- > 0;) {
+      for (std::size_t k = in.cases[c].runs.size(); k-- > 0;) {
+        w.write_run(c, k, in.cases[c].runs[k]);
+      }
+    }
+    w.commit();
+  }
+  expect_same(read_results_file(dir_ / "in_order.h5"), read_results_file(dir_ / "reversed.h5"));
+  {
+    ResultsFileWriter w(dir_ / "partial.h5", in);
+    w.write_run(0, 0, in.cases[0].runs[0]);
+    EXPECT_THROW(w.commit(), std::logic_error);
+  }
+  EXPECT_EQ(listing(), (std::vector<std::string>{"in_order.h5", "reversed.h5"}));
+}
+
 // ---- SHA-256 -------------------------------------------------------------------
 
 // FIPS 180-2 Appendix B vectors; the lengths around the one- and two-block

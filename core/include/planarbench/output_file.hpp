@@ -25,6 +25,30 @@ namespace pb {
 [[nodiscard]] std::filesystem::path output_target(const std::string& option,
                                                   const std::filesystem::path& path);
 
+// One output being written: the temporary beside the target, named
+// `.<name>.tmp.<pid>`, renamed over the target by commit(). Destroyed without
+// commit (an exception, a failed run), it removes the temporary and leaves the
+// target as it was.
+class AtomicOutput {
+ public:
+  // checks `path` (output_target); creates nothing
+  AtomicOutput(const std::string& option, const std::filesystem::path& path);
+  ~AtomicOutput();
+  AtomicOutput(const AtomicOutput&) = delete;
+  AtomicOutput& operator=(const AtomicOutput&) = delete;
+  // the temporary to write (closed by the caller before commit)
+  [[nodiscard]] const std::filesystem::path& temporary() const { return tmp_; }
+  // Flushes the temporary, renames it over the target (re-checked: a FIFO
+  // made meanwhile stays) and removes temporaries of killed writers. Returns
+  // the path written (the link's target for a symbolic link).
+  std::filesystem::path commit();
+
+ private:
+  std::string option_;
+  std::filesystem::path given_, target_, tmp_;
+  bool committed_ = false;
+};
+
 // Writes `path` (checked by output_target) through a temporary in its folder:
 // fill(temporary) writes the temporary, which is then flushed and renamed
 // over the target. On any failure the temporary is removed, the target is

@@ -2,11 +2,38 @@
 // temporary name in the target directory and renamed when complete.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
+#include <memory>
 
 #include "planarbench/run_result.hpp"
 
 namespace pb {
+
+// The results file written run by run, as the runs end (`planarbench run`).
+// The constructor checks the target (output_target: exit 2 for a FIFO,
+// a device, a missing folder), and makes the file's header, every case's
+// group and one empty group per run of `layout` (only their engine names are
+// read), in that order: the file lists its runs in that order whatever order
+// they end in, and its datasets do not depend on it. write_run may be called
+// from any thread, one call at a time (it serialises its callers: the HDF5
+// library is not thread-safe; nothing else may call HDF5 meanwhile);
+// commit() checks every run was written and renames the complete file over
+// the target. Destroyed without commit, it leaves nothing behind. HDF5
+// failures are std::runtime_error naming the file and the object.
+class ResultsFileWriter {
+ public:
+  ResultsFileWriter(const std::filesystem::path& path, const ResultsFile& layout, int threads = 1);
+  ~ResultsFileWriter();
+  ResultsFileWriter(const ResultsFileWriter&) = delete;
+  ResultsFileWriter& operator=(const ResultsFileWriter&) = delete;
+  void write_run(std::size_t case_index, std::size_t run_index, const RunResult& r);
+  void commit();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 // Writes the whole file atomically. Throws InputError when the target
 // directory is missing or not writable (nothing is left behind), and
