@@ -212,6 +212,33 @@ def markdown_table(cells):
     return "\n".join(lines)
 
 
+# Issue 12's detection targets, measured within one run (ratios of the new
+# results only, so that machine speed cancels): the engine's default search
+# warm against the brute force at N = 180, and its growth from N = 45 to 1440.
+DETECTION_TARGETS = {"near_contact": 100.0, "in_contact": 60.0}
+DETECTION_GROWTH_LIMIT = 2.0
+
+
+def detection_ratios(summary):
+    """Rows (config, N, brute / default_warm, target) and (config, growth, limit)."""
+    def median(method, config, n):
+        entry = summary.get(f"detection/{method}/{config}/N:{n}")
+        return entry["median_s"] if entry and entry.get("median_s") else None
+
+    rows = []
+    for config, target in DETECTION_TARGETS.items():
+        for n in (45, 180, 1440):
+            brute, fast = median("brute", config, n), median("default_warm", config, n)
+            if brute and fast:
+                rows.append([f"{config} N={n}", "brute / default_warm", f"{brute / fast:.1f}",
+                             f">= {target:g}" if n == 180 else "-"])
+        small, large = median("default_warm", config, 45), median("default_warm", config, 1440)
+        if small and large:
+            rows.append([f"{config}", "default_warm N=1440 / N=45", f"{large / small:.2f}",
+                         f"<= {DETECTION_GROWTH_LIMIT:g}" if config == "in_contact" else "-"])
+    return rows
+
+
 def main(argv):
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--pair", nargs=2, action="append", required=True,
@@ -266,6 +293,11 @@ def main(argv):
             cells = table_rows(rows)
             text += [text_table(cells), ""]
             md += [markdown_table(cells), ""]
+            ratio_rows = detection_ratios(summarise(new_data, args.metric))
+            if ratio_rows:
+                ratio_cells = [["detection now", "ratio", "value", "target"]] + ratio_rows
+                text += ["speed-ups within this run:", text_table(ratio_cells), ""]
+                md += ["Speed-ups within this run:", "", markdown_table(ratio_cells), ""]
             for row in rows:
                 counts[row[4]] = counts.get(row[4], 0) + 1
     except InputError as e:

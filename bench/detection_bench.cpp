@@ -1,6 +1,10 @@
 // The cost of one contact detection on outlines, registered at run time as
 // detection/<method>/<configuration>/N:<points>:
 //   brute        OutlineContactSearch::evaluate (every point against every edge)
+//   default_cold PairGeometry::evaluate with detection=fast, the engine's
+//                default, without history: for this pair (a disk on a
+//                half-plane) the closed form of convex_line_contact.hpp
+//   default_warm the same along the pose sequence (the engine's case)
 //   fast_cold    FastOutlineContactSearch::evaluate without history (as a fresh
 //                search object; the object itself is built once, outside the
 //                timing: building it builds the trees, O(N log N), not a detection)
@@ -38,6 +42,7 @@
 #include "planarbench/errors.hpp"
 #include "planarbench/reference/fast_outline_contact.hpp"
 #include "planarbench/reference/outline_contact.hpp"
+#include "planarbench/reference/pair_geometry.hpp"
 
 namespace pb::bench {
 
@@ -50,6 +55,8 @@ constexpr double kNearGapM = 1e-3;     // m, near_contact gap
 
 // The falling_ball scene: ground and disk, and the disk's poses.
 struct Scene {
+  Body ground_body;
+  Body disk_body;
   Shape ground_shape;
   Shape disk_shape;
   Pose ground;
@@ -89,7 +96,7 @@ Scene make_scene(bool in_contact) {
   const auto* circle = std::get_if<Circle>(&ball.shape);
   if (!circle) throw InputError(c.source_path, 0, "bodies", "falling_ball's ball is not a circle");
   const double r = circle->radius_m;
-  Scene s{ground.shape, ball.shape, Pose{ground.position_m, ground.angle_rad}, {}};
+  Scene s{ground, ball, ground.shape, ball.shape, Pose{ground.position_m, ground.angle_rad}, {}};
   const Vec2 n = s.ground.rotation() * Vec2(0.0, 1.0);
   const Vec2 t = s.ground.rotation() * Vec2(1.0, 0.0);
   // the centre at the first impact: the start moved along gravity by lambda
@@ -107,7 +114,7 @@ Scene make_scene(bool in_contact) {
   return s;
 }
 
-enum class Method { brute, fast_cold, fast_warm, paper_two_stage };
+enum class Method { brute, default_cold, default_warm, fast_cold, fast_warm, paper_two_stage };
 
 void detect(benchmark::State& state, const Scene& scene, Method method) {
   const int n = static_cast<int>(state.range(0));
@@ -115,6 +122,11 @@ void detect(benchmark::State& state, const Scene& scene, Method method) {
   const std::vector<Vec2> b = contact_outline(scene.disk_shape, n);
   OutlineContactSearch brute(a, b);
   FastOutlineContactSearch fast(a, b);
+  Body ground_body = scene.ground_body;
+  Body disk_body = scene.disk_body;
+  ground_body.outline_points = n;
+  disk_body.outline_points = n;
+  PairGeometry pair(ground_body, disk_body, GeometryMode::outline, DetectionMode::fast);
   WorldOutline wa, wb;
   int k = 0;
   for (auto _ : state) {
@@ -123,6 +135,13 @@ void detect(benchmark::State& state, const Scene& scene, Method method) {
     switch (method) {
       case Method::brute:
         benchmark::DoNotOptimize(brute.evaluate(scene.ground, disk));
+        break;
+      case Method::default_cold:
+        pair.forget_history();
+        benchmark::DoNotOptimize(pair.evaluate(scene.ground, disk));
+        break;
+      case Method::default_warm:
+        benchmark::DoNotOptimize(pair.evaluate(scene.ground, disk));
         break;
       case Method::fast_cold:
         fast.forget_history();
@@ -138,6 +157,10 @@ void detect(benchmark::State& state, const Scene& scene, Method method) {
         break;
     }
   }
+  if (pair.tree_evaluations() > 0 && (method == Method::default_cold || method == Method::default_warm)) {
+    state.SkipWithError("the closed form refused a pose of the sequence");
+    return;
+  }
   state.counters["detections_per_s"] =
       benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["N"] = static_cast<double>(n);
@@ -146,6 +169,8 @@ void detect(benchmark::State& state, const Scene& scene, Method method) {
 void register_detection_benchmarks() {
   const std::vector<std::pair<std::string, Method>> methods = {
       {"brute", Method::brute},
+      {"default_cold", Method::default_cold},
+      {"default_warm", Method::default_warm},
       {"fast_cold", Method::fast_cold},
       {"fast_warm", Method::fast_warm},
       {"paper_two_stage", Method::paper_two_stage}};

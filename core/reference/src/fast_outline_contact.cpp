@@ -13,11 +13,6 @@ namespace pb {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// Rounding allowance of the lower bounds: relative to the size of the world
-// coordinates (each bound is a few dozen roundings of numbers of that size,
-// ~1e-14 relative; 1e-10 leaves four orders of margin) plus an absolute floor.
-constexpr double kMarginRelative = 1e-10;  // -
-constexpr double kMarginAbsolute_m = 1e-12;  // m
 // steps of the coherence descent over neighbouring points and edges
 constexpr int kDescentSteps = 64;
 
@@ -590,7 +585,7 @@ ContactGeometry FastOutlineContactSearch::evaluate(const Pose& pose_a, const Pos
   const double scale_m =
       std::max(pose_a.position_m.cwiseAbs().maxCoeff() + a_.tree.extent_m(),
                pose_b.position_m.cwiseAbs().maxCoeff() + b_.tree.extent_m());
-  margin_m_ = kMarginRelative * scale_m + kMarginAbsolute_m;
+  margin_m_ = internal::rounding_margin_m(scale_m);
 
   // U from the last evaluation's closest pair, then the trees
   best_d2_ = kInf;

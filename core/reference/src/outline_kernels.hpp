@@ -22,6 +22,12 @@ namespace pb::internal {
   return position_m + rotation * local_m;
 }
 
+// Rounding allowance of a decision taken on world coordinates of size
+// `scale_m` (m): each bound or height is a few dozen roundings of numbers of
+// that size, ~1e-14 relative; 1e-10 leaves four orders of margin, plus an
+// absolute floor of 1e-12 m.
+[[nodiscard]] inline double rounding_margin_m(double scale_m) { return 1e-10 * scale_m + 1e-12; }
+
 // what the point and crossing tests need of edge (x0, y0) -> (x1, y1)
 struct EdgeData {
   double ex = 0.0, ey = 0.0;  // m, edge vector

@@ -41,6 +41,7 @@ PairGeometry::PairGeometry(const Body& a, const Body& b, GeometryMode mode,
   if (!supported(a, b, mode, &reason)) throw std::invalid_argument(reason);
   if (mode == GeometryMode::outline || both_polygons(a, b)) {
     if (detection == DetectionMode::fast) {
+      convex_line_ = ConvexLineContact::make(a.shape, a.outline_points, b.shape, b.outline_points);
       fast_.emplace(contact_outline(a.shape, a.outline_points),
                     contact_outline(b.shape, b.outline_points));
     } else {
@@ -53,8 +54,22 @@ PairGeometry::PairGeometry(const Body& a, const Body& b, GeometryMode mode,
 }
 
 ContactGeometry PairGeometry::evaluate(const Pose& pose_a, const Pose& pose_b) {
-  if (fast_) return fast_->evaluate(pose_a, pose_b);
+  if (convex_line_) {
+    if (const std::optional<ContactGeometry> g = convex_line_->evaluate(pose_a, pose_b)) {
+      ++closed_form_count_;
+      return *g;
+    }
+  }
+  if (fast_) {
+    ++tree_count_;
+    return fast_->evaluate(pose_a, pose_b);
+  }
   return outline_ ? outline_->evaluate(pose_a, pose_b) : exact_->evaluate(pose_a, pose_b);
+}
+
+void PairGeometry::forget_history() {
+  if (convex_line_) convex_line_->forget_history();
+  if (fast_) fast_->forget_history();
 }
 
 }  // namespace pb

@@ -1,7 +1,9 @@
 // Contact detection on outlines, fast: the same result as the brute-force
 // search (OutlineContactSearch, outline_contact.hpp, the oracle: read its
 // header for what is computed and why). Setting `detection = fast` of engine
-// reference (the default); `detection = brute` selects the oracle.
+// reference (the default) for every pair and pose that the closed form of
+// convex_line_contact.hpp does not answer; `detection = brute` selects the
+// oracle.
 //
 // Cost. Apart or touching, O(log N) tree nodes per evaluation for smooth
 // outlines (the capsules of outline_tree.hpp keep O(1) nodes per level near

@@ -2,8 +2,11 @@
 // outline points (the paper, outline_contact.hpp) or the exact shapes
 // (exact_contact.hpp). Two polygons are exact as outlines in both modes.
 // Outline points are searched as the setting `detection` asks: fast (the
-// default, fast_outline_contact.hpp) or brute (the brute-force oracle); both
-// give the same result.
+// default) or brute (the brute-force oracle); both give the same result to
+// the tolerance their tests state. fast is the closed form of
+// convex_line_contact.hpp for a strictly convex outline on a half-plane
+// wherever it can decide, and the trees of fast_outline_contact.hpp
+// otherwise.
 #pragma once
 
 #include <optional>
@@ -11,6 +14,7 @@
 
 #include "planarbench/case.hpp"
 #include "planarbench/reference/contact_geometry.hpp"
+#include "planarbench/reference/convex_line_contact.hpp"
 #include "planarbench/reference/exact_contact.hpp"
 #include "planarbench/reference/fast_outline_contact.hpp"
 #include "planarbench/reference/outline_contact.hpp"
@@ -32,10 +36,18 @@ class PairGeometry {
                                       std::string* reason);
 
   [[nodiscard]] ContactGeometry evaluate(const Pose& pose_a, const Pose& pose_b);
+  // the next evaluation starts without the last one's history (fast)
+  void forget_history();
+  // evaluations answered by the closed form (convex_line_contact.hpp) and by
+  // the trees, since construction
+  [[nodiscard]] long closed_form_evaluations() const { return closed_form_count_; }
+  [[nodiscard]] long tree_evaluations() const { return tree_count_; }
 
  private:
   std::optional<OutlineContactSearch> outline_;
   std::optional<FastOutlineContactSearch> fast_;
+  std::optional<ConvexLineContact> convex_line_;
+  long closed_form_count_ = 0, tree_count_ = 0;
   std::optional<ExactContact> exact_;
 };
 
