@@ -392,17 +392,24 @@ TEST(ConvexLineContact, RefusesWhatItCannotDecide) {
   const Polygon square = poly({{-0.1, -0.1}, {0.1, -0.1}, {0.1, 0.1}, {-0.1, 0.1}});
   auto closed = ConvexLineContact::make(HalfPlane{8.0}, 801, square, 0);
   ASSERT_TRUE(closed);
-  // lying flat apart: a level face, answered; pressed in, the surface has
-  // 20 points inside the square against its 2: the surface's centroid
+  // lying flat, apart and pressed in: a level face, answered (pressed in,
+  // the surface has 20 points inside the square against its 2: the
+  // surface's centroid)
   EXPECT_TRUE(closed->evaluate(Pose{}, Pose{Vec2(0.3, 0.1 + 1e-3), 0.0}));
-  EXPECT_FALSE(closed->evaluate(Pose{}, Pose{Vec2(0.3, 0.1 - 1e-3), 0.0}));
+  EXPECT_TRUE(closed->evaluate(Pose{}, Pose{Vec2(0.3, 0.1 - 1e-3), 0.0}));
   // nearly level: tilted 1e-9 rad, within the margin (4e-10 m) in depth but
   // beyond kLevelTilt
-  EXPECT_FALSE(closed->evaluate(Pose{}, Pose{Vec2(0.3, 0.1 + 1e-3), 1e-9}));
+  const Pose nearly_level{Vec2(0.3, 0.1 + 1e-3), 1e-9};
+  EXPECT_FALSE(closed->evaluate(Pose{}, nearly_level));
   // tilted it answers; over the segment's end, or too deep near it, it does not
   EXPECT_TRUE(closed->evaluate(Pose{}, Pose{Vec2(0.3, 0.14), 0.3}));
   EXPECT_FALSE(closed->evaluate(Pose{}, Pose{Vec2(3.95, 0.14), 0.3}));
   EXPECT_FALSE(closed->evaluate(Pose{}, Pose{Vec2(3.7, -0.05), 0.3}));
+  // a 20-gon pressed into a surface sampled every 1 mm: more surface points
+  // inside (about 150) than the direct sum takes
+  auto fine = ConvexLineContact::make(HalfPlane{8.0}, 8001, Circle{0.1}, 20);
+  ASSERT_TRUE(fine);
+  EXPECT_FALSE(fine->evaluate(Pose{}, Pose{Vec2(0.3, 0.1 * std::cos(kPi / 20) - 2e-3), 0.0}));
 
   // PairGeometry falls back to the trees there and still equals the brute force
   Body ground{.name = "ground", .shape = HalfPlane{8.0}};
@@ -410,7 +417,7 @@ TEST(ConvexLineContact, RefusesWhatItCannotDecide) {
   Body box{.name = "box", .shape = square};
   PairGeometry pair(ground, box, GeometryMode::outline, DetectionMode::fast);
   OutlineContactSearch brute(contact_outline(ground.shape, 801), square.points_m);
-  for (const Pose& p : {Pose{Vec2(0.3, 0.1 - 1e-3), 0.0}, Pose{Vec2(0.3, 0.14), 0.3}}) {
+  for (const Pose& p : {nearly_level, Pose{Vec2(0.3, 0.14), 0.3}}) {
     const ContactGeometry g = pair.evaluate(Pose{}, p);
     const ContactGeometry gb = brute.evaluate(Pose{}, p);
     EXPECT_NEAR(g.gap_m, gb.gap_m, kTol);
@@ -418,6 +425,45 @@ TEST(ConvexLineContact, RefusesWhatItCannotDecide) {
   }
   EXPECT_EQ(pair.closed_form_evaluations(), 1);
   EXPECT_EQ(pair.tree_evaluations(), 1);
+}
+
+// A square lying on a finely sampled surface (incline_launch: 801 points over
+// 8 m, the square's side 0.2 m), flat and tilted by up to 0.05 rad, apart by
+// 1 mm to pressed in by 3 mm, sliding along: the surface's points inside the
+// square outnumber its corners, so the line of action is the centroid of the
+// surface's points, each as deep as its distance to the square's boundary.
+TEST(ConvexLineContact, PolygonOnAFineSurfaceUsesTheSurfacePoints) {
+  const Polygon square = poly({{-0.1, -0.1}, {0.1, -0.1}, {0.1, 0.1}, {-0.1, 0.1}});
+  const Pose ground{Vec2(0.5, -0.2), -20.0 * kPi / 180.0};
+  const Vec2 normal = ground.rotation() * Vec2(0, 1);
+  const Vec2 along = ground.rotation() * Vec2(1, 0);
+  auto closed = ConvexLineContact::make(square, 0, HalfPlane{8.0}, 801);
+  ASSERT_TRUE(closed);
+  const std::vector<Vec2> local = contact_outline(square, 0);
+  const std::vector<Vec2> surface = contact_outline(HalfPlane{8.0}, 801);
+  OutlineContactSearch brute(local, surface);
+  Tally tally;
+  int surface_side = 0;
+  for (int k = 0; k < 120; ++k) {
+    const double tilt = k % 3 == 0 ? 0.0 : 0.05 * std::sin(0.7 * k);
+    const double gap_m = 1.1e-3 - 4e-3 * (k % 9) / 8.0;  // never 0: touching is the trees' case
+    // the centre at the height that puts the lowest corner at gap_m
+    const double lowest = 0.1 * (std::cos(tilt) + std::abs(std::sin(tilt)));
+    const Pose box{ground.position_m + (lowest + gap_m) * normal + (0.0123 * k - 0.7) * along,
+                   ground.angle_rad + tilt};
+    const int refused_before = tally.refused;
+    check_pose(*closed, brute, local, false, ground, box, tally, "k " + std::to_string(k));
+    const int corners = overlap_below(local, box, ground).count;
+    const int surface_points = surface_points_inside(surface, ground, local, box);
+    if (tally.refused > refused_before) {
+      // refused only when neither side has clearly more points inside
+      EXPECT_LE(std::abs(corners - surface_points), 1) << "k " << k;
+    } else if (corners < surface_points) {
+      ++surface_side;
+    }
+  }
+  EXPECT_LE(tally.refused, 12);
+  EXPECT_GT(surface_side, 40);
 }
 
 }  // namespace

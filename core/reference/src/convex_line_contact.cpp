@@ -1,7 +1,9 @@
 #include "planarbench/reference/convex_line_contact.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <utility>
 #include <variant>
@@ -164,8 +166,10 @@ int ConvexLineContact::run_end(int k, int top, int step, int guess, const Vec2& 
 }
 
 // Surface vertices strictly between u0 < u1 (m along the line), counting as
-// `ambiguous` those within `margin` of either end.
-int ConvexLineContact::surface_count_between(double u0, double u1, double margin, int& ambiguous) {
+// `ambiguous` those within `margin` of either end; the certain ones are
+// first, first + 1, ...
+int ConvexLineContact::surface_count_between(double u0, double u1, double margin, int& ambiguous,
+                                             int& first) {
   // surface_x_ descends: the vertices beyond a value form a prefix
   auto beyond = [&](double v, bool or_equal) {
     const auto it = std::partition_point(surface_x_.begin(), surface_x_.end(), [&](double x) {
@@ -174,10 +178,76 @@ int ConvexLineContact::surface_count_between(double u0, double u1, double margin
     });
     return static_cast<int>(it - surface_x_.begin());
   };
-  const int certain = std::max(0, beyond(u0 + margin, false) - beyond(u1 - margin, true));
+  first = beyond(u1 - margin, true);
+  const int certain = std::max(0, beyond(u0 + margin, false) - first);
   const int possible = beyond(u0 - margin, true) - beyond(u1 + margin, false);
   ambiguous = possible - certain;
   return certain;
+}
+
+// The depth-weighted centroid of C's run lo .. hi (count points), world;
+// `fallback` when the depths sum to zero.
+Vec2 ConvexLineContact::body_centroid(int lo, int hi, int count, const Vec2& m, double s,
+                                      const Eigen::Matrix2d& r_body, const Vec2& x_body,
+                                      const Vec2& fallback) {
+  long double w_sum = 0.0L;
+  long double qx_sum = 0.0L, qy_sum = 0.0L;
+  if (count <= kDirectSumPoints) {
+    for (int o = 0, i = lo; o < count; ++o, i = next(i)) {
+      ++work_.summed_points;
+      const Vec2& q = q_[static_cast<std::size_t>(i)];
+      const double w = -(m.dot(q) + s);
+      w_sum += w;
+      qx_sum += w * q.x();
+      qy_sum += w * q.y();
+    }
+  } else {
+    // sums over the cyclic range lo .. hi from the prefix sums
+    auto range = [&](const std::vector<long double>& p) {
+      const auto l = static_cast<std::size_t>(lo);
+      const auto h1 = static_cast<std::size_t>(hi) + 1;
+      return lo <= hi ? p[h1] - p[l] : p.back() - p[l] + p[h1];
+    };
+    const long double sx = range(s1x_), sy = range(s1y_);
+    const long double sxx = range(s2xx_), sxy = range(s2xy_), syy = range(s2yy_);
+    const long double mx = m.x(), my = m.y(), sl = s;
+    w_sum = -(mx * sx + my * sy + static_cast<long double>(count) * sl);
+    qx_sum = -(sxx * mx + sxy * my + sl * sx);
+    qy_sum = -(sxy * mx + syy * my + sl * sy);
+  }
+  if (!(w_sum > 0.0L)) return fallback;
+  const Vec2 centroid(static_cast<double>(qx_sum / w_sum), static_cast<double>(qy_sum / w_sum));
+  return internal::place_point(r_body, x_body, centroid);
+}
+
+// The depth-weighted centroid of the surface vertices first .. first + count
+// - 1, all inside C, world. A point inside a convex polygon is nearest the
+// line of one of its edges, so its depth is the least distance to those
+// lines (the brute force's distance to the boundary).
+std::optional<Vec2> ConvexLineContact::surface_centroid(int first, int count,
+                                                        const Eigen::Matrix2d& r_line,
+                                                        const Vec2& x_line,
+                                                        const Eigen::Matrix2d& r_body,
+                                                        const Vec2& x_body) {
+  std::array<Vec2, kSurfaceSidePolygonVertices> vertex, normal;
+  const auto n = static_cast<std::size_t>(n_);
+  for (std::size_t e = 0; e < n; ++e) vertex[e] = internal::place_point(r_body, x_body, q_[e]);
+  for (std::size_t e = 0; e < n; ++e) {
+    const Vec2 edge = vertex[(e + 1) % n] - vertex[e];
+    normal[e] = internal::edge_outward_normal(edge.x(), edge.y());
+  }
+  double w_sum = 0.0, wu_sum = 0.0;
+  for (int j = first; j < first + count; ++j) {
+    ++work_.summed_points;
+    const double u = surface_x_[static_cast<std::size_t>(j)];
+    const Vec2 p = internal::place_point(r_line, x_line, Vec2(u, 0.0));
+    double depth = std::numeric_limits<double>::infinity();
+    for (std::size_t e = 0; e < n; ++e) depth = std::min(depth, normal[e].dot(vertex[e] - p));
+    w_sum += depth;
+    wu_sum += depth * u;
+  }
+  if (!(w_sum > 0.0)) return std::nullopt;
+  return internal::place_point(r_line, x_line, Vec2(wu_sum / w_sum, 0.0));
 }
 
 std::optional<ContactGeometry> ConvexLineContact::evaluate(const Pose& pose_a, const Pose& pose_b) {
@@ -220,7 +290,7 @@ std::optional<ContactGeometry> ConvexLineContact::evaluate(const Pose& pose_a, c
   if (hk < 0.0) {
     const int top = walk_up(has_history_ ? highest_ : support(m), m);
     int lo = 0, hi = n_ - 1, count = n_;
-    int ambiguous_c = 0, ambiguous_l = 0, count_l = 0;
+    int ambiguous_c = 0, ambiguous_l = 0, count_l = 0, first_l = 0;
     if (height(top, m) + s < 0.0) {
       // C wholly below the surface: every vertex inside, no surface vertex inside C
       highest_ = top;
@@ -240,7 +310,8 @@ std::optional<ContactGeometry> ConvexLineContact::evaluate(const Pose& pose_a, c
       };
       const double u_hi = crossing(hi, next(hi));
       const double u_lo = crossing(lo, prev(lo));
-      count_l = surface_count_between(std::min(u_lo, u_hi), std::max(u_lo, u_hi), margin, ambiguous_l);
+      count_l = surface_count_between(std::min(u_lo, u_hi), std::max(u_lo, u_hi), margin, ambiguous_l,
+                                      first_l);
       for (const int i : {lo, hi, prev(lo), next(hi)}) {
         if (std::abs(h(i)) <= margin) ++ambiguous_c;
       }
@@ -249,37 +320,16 @@ std::optional<ContactGeometry> ConvexLineContact::evaluate(const Pose& pose_a, c
       hi_ = hi;
       lo_ = lo;
     }
-    if (!(count - ambiguous_c > count_l + ambiguous_l)) return std::nullopt;
-
-    // depth-weighted centroid of C's run, body frame
-    long double w_sum = 0.0L;
-    long double qx_sum = 0.0L, qy_sum = 0.0L;
-    if (count <= kDirectSumPoints) {
-      for (int o = 0, i = lo; o < count; ++o, i = next(i)) {
-        ++work_.summed_points;
-        const Vec2& q = q_[static_cast<std::size_t>(i)];
-        const double w = -(m.dot(q) + s);
-        w_sum += w;
-        qx_sum += w * q.x();
-        qy_sum += w * q.y();
-      }
+    if (count - ambiguous_c > count_l + ambiguous_l) {
+      point = body_centroid(lo, hi, count, m, s, r_body, body.position_m, p_k);
+    } else if (count_l - ambiguous_l > count + ambiguous_c && count_l <= kDirectSumPoints &&
+               n_ <= kSurfaceSidePolygonVertices) {
+      const std::optional<Vec2> on_line =
+          surface_centroid(first_l, count_l, r_line, line.position_m, r_body, body.position_m);
+      if (!on_line) return std::nullopt;
+      point = *on_line + hk * n;
     } else {
-      // sums over the cyclic range lo .. hi from the prefix sums
-      auto range = [&](const std::vector<long double>& p) {
-        const auto l = static_cast<std::size_t>(lo);
-        const auto h1 = static_cast<std::size_t>(hi) + 1;
-        return lo <= hi ? p[h1] - p[l] : p.back() - p[l] + p[h1];
-      };
-      const long double sx = range(s1x_), sy = range(s1y_);
-      const long double sxx = range(s2xx_), sxy = range(s2xy_), syy = range(s2yy_);
-      const long double mx = m.x(), my = m.y(), sl = s;
-      w_sum = -(mx * sx + my * sy + static_cast<long double>(count) * sl);
-      qx_sum = -(sxx * mx + sxy * my + sl * sx);
-      qy_sum = -(sxy * mx + syy * my + sl * sy);
-    }
-    if (w_sum > 0.0L) {
-      const Vec2 centroid(static_cast<double>(qx_sum / w_sum), static_cast<double>(qy_sum / w_sum));
-      point = internal::place_point(r_body, body.position_m, centroid);
+      return std::nullopt;
     }
   }
   deepest_ = k;

@@ -37,8 +37,13 @@
 //   the surface vertices' positions (sorted). None is deeper than vertex k
 //   (its distance to C's boundary is at most its vertical distance to the
 //   boundary, less than C's depth unless C's lowest edge is level with the
-//   line: level faces, below). The brute force's line of action is then the
-//   depth-weighted centroid of C's run when C has more points inside.
+//   line: level faces, below). The brute force's line of action is the
+//   depth-weighted centroid of C's run when C has more points inside, and
+//   that of the surface's points inside C when those are more (a polygon
+//   lying on a finely sampled surface): then C must be a polygon of at most
+//   kSurfaceSidePolygonVertices vertices and the surface points at most
+//   kDirectSumPoints, each one's depth the least distance to the lines of
+//   C's edges (C convex), summed point by point.
 // Level faces. When a neighbour j of k is as deep as k to within the margin,
 // C has a face level with the surface (a polygon lying flat; the 180-point
 // disk of sliding, whose lowest edge is parallel to its incline). Every
@@ -59,9 +64,10 @@
 //   middle, edges at 45 deg) could be nearer than the surface: the whole of C
 //   (its bounding circle about the body origin) must lie along the line within
 //   extent/2 - (1 + sqrt 2) delta of the middle;
-// * an overlap where C does not have more points inside than the surface
-//   has inside C, counting every point within the margin of the boundary on
-//   the side that could flip the decision.
+// * an overlap where neither side has more points inside the other for
+//   certain (every point within the margin of the boundary counted on the
+//   side that could flip the decision), or where the surface's side has more
+//   than the bounds above allow.
 // The margin is that of the tree search: 1e-10 times the scene's coordinate
 // size plus 1e-12 m.
 // Hot path: no allocation, no throw.
@@ -86,6 +92,9 @@ class ConvexLineContact {
  public:
   // runs of at most this many points are summed point by point
   static constexpr int kDirectSumPoints = 32;
+  // the surface's points inside C are summed (up to kDirectSumPoints of them)
+  // when C is a polygon of at most this many vertices
+  static constexpr int kSurfaceSidePolygonVertices = 16;
 
   // The closed form for the pair (a, b) with outline point counts n_a, n_b,
   // or nullopt when it does not apply: not exactly one half-plane, or the
@@ -115,7 +124,13 @@ class ConvexLineContact {
   int walk_down(int k, const Vec2& m);
   int walk_up(int k, const Vec2& m);
   int run_end(int k, int top, int step, int guess, const Vec2& m, double s);
-  [[nodiscard]] int surface_count_between(double u0, double u1, double margin, int& ambiguous);
+  [[nodiscard]] int surface_count_between(double u0, double u1, double margin, int& ambiguous,
+                                          int& first);
+  Vec2 body_centroid(int lo, int hi, int count, const Vec2& m, double s, const Eigen::Matrix2d& r_body,
+                     const Vec2& x_body, const Vec2& fallback);
+  std::optional<Vec2> surface_centroid(int first, int count, const Eigen::Matrix2d& r_line,
+                                       const Vec2& x_line, const Eigen::Matrix2d& r_body,
+                                       const Vec2& x_body);
 
   std::vector<Vec2> q_;                   // m, convex outline, body frame, counter-clockwise
   std::vector<double> normal_angle_;      // rad, outward normal angle of edge i, increasing
