@@ -151,6 +151,15 @@ AtomicOutput::~AtomicOutput() {
   fs::remove(tmp_, ec);
 }
 
+void AtomicOutput::start_writeback() const {
+#ifdef __linux__
+  const int fd = ::open(tmp_.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return;
+  (void)::sync_file_range(fd, 0, 0, SYNC_FILE_RANGE_WRITE);
+  ::close(fd);
+#endif
+}
+
 fs::path AtomicOutput::commit() {
   const fs::path dir = target_.parent_path().empty() ? fs::path(".") : target_.parent_path();
   fsync_path(tmp_, O_RDONLY);

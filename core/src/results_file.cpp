@@ -506,6 +506,10 @@ void ResultsFileWriter::write_run(std::size_t case_index, std::size_t run_index,
     rethrow_as_write_error(st.path, e);
   }
   st.written[case_index][run_index] = true;
+  // the run's chunks are in the file: let the disk take them while the
+  // other runs simulate (strace of the full matrix, --jobs 2: commit's fsync
+  // of the 27 MB file took 55 ms before, 27 .. 39 ms after in 3 runs)
+  st.out.start_writeback();
 }
 
 void ResultsFileWriter::commit() {

@@ -38,6 +38,10 @@ class AtomicOutput {
   AtomicOutput& operator=(const AtomicOutput&) = delete;
   // the temporary to write (closed by the caller before commit)
   [[nodiscard]] const std::filesystem::path& temporary() const { return tmp_; }
+  // Starts the disk writes of what the temporary holds so far, without
+  // waiting for them (best effort: Linux's sync_file_range; elsewhere
+  // nothing), so that commit's flush has little left to wait for.
+  void start_writeback() const;
   // Flushes the temporary, renames it over the target (re-checked: a FIFO
   // made meanwhile stays) and removes temporaries of killed writers. Returns
   // the path written (the link's target for a symbolic link).
