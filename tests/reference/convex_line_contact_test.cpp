@@ -397,13 +397,13 @@ TEST(ConvexLineContact, RefusesWhatItCannotDecide) {
   // surface's centroid)
   EXPECT_TRUE(closed->evaluate(Pose{}, Pose{Vec2(0.3, 0.1 + 1e-3), 0.0}));
   EXPECT_TRUE(closed->evaluate(Pose{}, Pose{Vec2(0.3, 0.1 - 1e-3), 0.0}));
-  // nearly level: tilted 1e-9 rad, within the margin (4e-10 m) in depth but
-  // beyond kLevelTilt
-  const Pose nearly_level{Vec2(0.3, 0.1 + 1e-3), 1e-9};
-  EXPECT_FALSE(closed->evaluate(Pose{}, nearly_level));
+  // tilted by 1e-9 rad its corners differ in depth by 2e-10 m, far beyond
+  // rounding: answered as any tilted pose
+  EXPECT_TRUE(closed->evaluate(Pose{}, Pose{Vec2(0.3, 0.1 + 1e-3), 1e-9}));
   // tilted it answers; over the segment's end, or too deep near it, it does not
   EXPECT_TRUE(closed->evaluate(Pose{}, Pose{Vec2(0.3, 0.14), 0.3}));
-  EXPECT_FALSE(closed->evaluate(Pose{}, Pose{Vec2(3.95, 0.14), 0.3}));
+  const Pose past_the_end{Vec2(3.95, 0.14), 0.3};
+  EXPECT_FALSE(closed->evaluate(Pose{}, past_the_end));
   EXPECT_FALSE(closed->evaluate(Pose{}, Pose{Vec2(3.7, -0.05), 0.3}));
   // a 20-gon pressed into a surface sampled every 1 mm: more surface points
   // inside (about 150) than the direct sum takes
@@ -417,7 +417,7 @@ TEST(ConvexLineContact, RefusesWhatItCannotDecide) {
   Body box{.name = "box", .shape = square};
   PairGeometry pair(ground, box, GeometryMode::outline, DetectionMode::fast);
   OutlineContactSearch brute(contact_outline(ground.shape, 801), square.points_m);
-  for (const Pose& p : {nearly_level, Pose{Vec2(0.3, 0.14), 0.3}}) {
+  for (const Pose& p : {past_the_end, Pose{Vec2(0.3, 0.14), 0.3}}) {
     const ContactGeometry g = pair.evaluate(Pose{}, p);
     const ContactGeometry gb = brute.evaluate(Pose{}, p);
     EXPECT_NEAR(g.gap_m, gb.gap_m, kTol);

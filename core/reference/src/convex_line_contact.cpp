@@ -26,6 +26,11 @@ constexpr double kClosingEdgeFactor = 1.0 + std::numbers::sqrt2;
 // rad: a face of C tied with the deepest vertex is answered when it is level
 // with the surface to within this angle (header)
 constexpr double kLevelTilt = 1e-10;
+// Two depths closer than this may be ordered either way by the brute force's
+// rounding (a depth is a few roundings of world coordinates of size scale:
+// ~1e-14 relative; ten times that, plus a floor)
+constexpr double kTieRelative = 1e-13;   // -
+constexpr double kTieAbsolute_m = 1e-15;  // m
 
 // Strictly convex, counter-clockwise and simple: every turn strictly left and
 // the turns adding up to one revolution (not two or more: a star polygon).
@@ -262,9 +267,9 @@ std::optional<ContactGeometry> ConvexLineContact::evaluate(const Pose& pose_a, c
   const Vec2 d = body.position_m - line.position_m;
   const double s = n.dot(d);  // m, height of C's origin
   const double uc = t.dot(d);  // m, C's origin along the line
-  const double margin = internal::rounding_margin_m(
-      std::max(body.position_m.cwiseAbs().maxCoeff() + radius_m_,
-               line.position_m.cwiseAbs().maxCoeff() + half_extent_m_));
+  const double scale_m = std::max(body.position_m.cwiseAbs().maxCoeff() + radius_m_,
+                                  line.position_m.cwiseAbs().maxCoeff() + half_extent_m_);
+  const double margin = internal::rounding_margin_m(scale_m);
 
   // the deepest vertex; a neighbour tied with it must make a level face
   const int k = walk_down(has_history_ ? deepest_ : support(-m), m);
@@ -274,7 +279,7 @@ std::optional<ContactGeometry> ConvexLineContact::evaluate(const Pose& pose_a, c
     const double h_prev = height(prev(k), m), h_next = height(next(k), m);
     const int j = h_prev < h_next ? prev(k) : next(k);
     const double rise_m = std::min(h_prev, h_next) - h_body_k;
-    if (!(rise_m > margin)) {
+    if (!(rise_m > kTieRelative * scale_m + kTieAbsolute_m)) {
       const double face_m = (q_[static_cast<std::size_t>(j)] - q_[static_cast<std::size_t>(k)]).norm();
       if (!(rise_m <= kLevelTilt * face_m)) return std::nullopt;
     }

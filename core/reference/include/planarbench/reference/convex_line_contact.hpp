@@ -44,8 +44,9 @@
 //   kSurfaceSidePolygonVertices vertices and the surface points at most
 //   kDirectSumPoints, each one's depth the least distance to the lines of
 //   C's edges (C convex), summed point by point.
-// Level faces. When a neighbour j of k is as deep as k to within the margin,
-// C has a face level with the surface (a polygon lying flat; the 180-point
+// Level faces. When a neighbour j of k is as deep as k to within the
+// rounding of a depth (1e-13 of the scene's size + 1e-15 m), C has a face
+// level with the surface (a polygon lying flat; the 180-point
 // disk of sliding, whose lowest edge is parallel to its incline). Every
 // point of that face, and every surface vertex above it, is then a deepest
 // or closest point within rounding, and the brute force picks one by its
@@ -54,11 +55,14 @@
 // kLevelTilt = 1e-10 rad: the brute force's normal is then the surface's or
 // the face's, which differ by at most that angle, and its gap is the same
 // to rounding. Its closest points apart may be any point of the face
-// (tested as such).
+// (tested as such). The same ill-conditioning reaches a little past the
+// level band: a surface vertex within ~1e-14 m / tilt of vertex k along the
+// line is as deep as k to rounding, and the brute force may then report the
+// face's normal, tilted from the surface's by the face's tilt.
 // What is refused (nullopt: the caller asks the tree search), so that the
 // answer is never a guess:
-// * a face nearly level: within the margin in depth but tilted by more than
-//   kLevelTilt;
+// * a face nearly level: tied in depth but tilted by more than kLevelTilt
+//   (a band of 1e-10 .. ~1e-10 rad for the cases' outlines);
 // * C not wholly over the surface segment, or so deep that the closing edges
 //   of the half-plane's outline (contact_outline: the point extent/2 below the
 //   middle, edges at 45 deg) could be nearer than the surface: the whole of C
@@ -68,8 +72,8 @@
 //   certain (every point within the margin of the boundary counted on the
 //   side that could flip the decision), or where the surface's side has more
 //   than the bounds above allow.
-// The margin is that of the tree search: 1e-10 times the scene's coordinate
-// size plus 1e-12 m.
+// The margin, for counting points near the boundary, is that of the tree
+// search: 1e-10 times the scene's coordinate size plus 1e-12 m.
 // Hot path: no allocation, no throw.
 #pragma once
 
