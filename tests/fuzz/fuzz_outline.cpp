@@ -17,7 +17,12 @@
 //   point against every edge of the other outline, winding-number inside test);
 // * nearest_boundary_point against the same naive distance and inside test;
 // * the fast search (fast_outline_contact.hpp) against the brute force, fresh,
-//   after a motion (with its history) and with the bodies swapped.
+//   after a motion (with its history) and with the bodies swapped;
+// * the closed form for a convex outline on a half-plane
+//   (convex_line_contact.hpp), wherever it answers, fresh and after the
+//   motion: a consistent geometry with the brute force's gap. Its points are
+//   not compared: where the brute force's deepest or closest point is picked
+//   by rounding (level faces) they may differ by design, as its test states.
 // Only geometry that doubles resolve is checked: every outline's feature size
 // (shortest edge, least distance of a point to another edge) at least
 // kResolvable times the largest coordinate of the input. Below that (a
@@ -41,6 +46,7 @@
 #include "outline_fuzz_input.hpp"
 #include "planarbench/outline.hpp"
 #include "planarbench/reference/contact_geometry.hpp"
+#include "planarbench/reference/convex_line_contact.hpp"
 #include "planarbench/reference/fast_outline_contact.hpp"
 #include "planarbench/reference/outline_contact.hpp"
 
@@ -352,6 +358,21 @@ void run(const pb::fuzz::FuzzInput& in) {
   const pb::ContactGeometry fh = fast_ba.evaluate(in.b.pose, in.a.pose);
   if (verbose()) print_geometry("fast b-a", fh);
   check_same(fh, h, scale);
+
+  // the closed form, where it applies and answers
+  if (auto closed = pb::ConvexLineContact::make(in.a.shape, in.a.outline_points, in.b.shape,
+                                                in.b.outline_points)) {
+    if (const auto cg = closed->evaluate(in.a.pose, in.b.pose)) {
+      if (verbose()) print_geometry("closed a-b", *cg);
+      check_geometry(*cg, tol);
+      PB_FUZZ_CHECK(std::abs(cg->gap_m - g.gap_m) <= tol);
+    }
+    if (const auto cm = closed->evaluate(ma, mb)) {
+      if (verbose()) print_geometry("closed moved", *cm);
+      check_geometry(*cm, kRelativeTolerance * moved_scale);
+      PB_FUZZ_CHECK(std::abs(cm->gap_m - m.gap_m) <= kRelativeTolerance * moved_scale);
+    }
+  }
 
   // one point against b's boundary
   check_probe(in.probe_m, wb, tol);
