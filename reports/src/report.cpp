@@ -17,6 +17,7 @@
 #include "report_provenance.hpp"
 #include "report_svg.hpp"
 #include "report_tables.hpp"
+#include "report_verdict.hpp"
 #include "report_web_assets.hpp"
 #include "report_work_precision.hpp"
 #include "report_work_precision_svg.hpp"
@@ -109,11 +110,14 @@ ReportSummary write_report(const ReportOptions& options) {
   }
   internal::FigureLimits limits;
   limits.max_outside = options.max_points_outside_contact;
+  limits.max_inside = options.max_points_inside_contact;
   report.downsampling_note = fmt::format(
       "Series are down-sampled for embedding: every sample inside a contact window (each "
-      "episode of any run, padded by two output intervals) is kept, at most {} evenly spaced "
-      "samples per series outside them. The results file has every sample.",
-      limits.max_outside);
+      "episode of any run, padded by two output intervals) is kept up to {} per series (a "
+      "longer, sustained contact keeps the lowest and highest sample of each block, so peaks "
+      "survive), at most {} evenly spaced samples per series outside them. The results file "
+      "has every sample.",
+      limits.max_inside, limits.max_outside);
 
   // per case: the case model, its figures, its metrics
   std::vector<Case> cases;
@@ -147,6 +151,8 @@ ReportSummary write_report(const ReportOptions& options) {
   }
 
   if (with_results) {
+    report.verdict = internal::verdict_table(results, cases, metrics, outcomes, report.mappings,
+                                             report.work_precision);
     report.tables.push_back(internal::capability_table(results));
     report.tables.push_back(internal::physics_table(results));
     report.tables.push_back(internal::timings_table(results, cases));

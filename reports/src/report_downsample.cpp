@@ -22,7 +22,8 @@ std::vector<TimeWindow> merge_windows(std::vector<TimeWindow> windows) {
 
 std::vector<std::size_t> downsample_indices(const std::vector<double>& time_s,
                                             const std::vector<TimeWindow>& windows,
-                                            std::size_t max_outside, std::size_t max_inside) {
+                                            std::size_t max_outside, std::size_t max_inside,
+                                            const std::vector<double>* value) {
   const std::size_t n = time_s.size();
   if (n == 0) return {};
   const auto merged = merge_windows(windows);
@@ -48,6 +49,33 @@ std::vector<std::size_t> downsample_indices(const std::vector<double>& time_s,
   const std::size_t stride_out = stride_for(n_outside, std::max<std::size_t>(max_outside, 2));
   const std::size_t stride_in = stride_for(n_inside, std::max<std::size_t>(max_inside, 2));
 
+  // inside, thinned with values: per block of 2 * stride_in consecutive
+  // inside samples its lowest and its highest (NaN samples never chosen)
+  const bool extremes = value != nullptr && value->size() == n && stride_in > 1;
+  std::vector<char> extreme(extremes ? n : 0, 0);
+  if (extremes) {
+    const std::size_t block = 2 * stride_in;
+    std::size_t count = 0;
+    std::size_t lo = n;
+    std::size_t hi = n;
+    auto close_block = [&] {
+      if (lo < n) extreme[lo] = 1;
+      if (hi < n) extreme[hi] = 1;
+      count = 0;
+      lo = hi = n;
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+      if (inside[i] == 0) continue;
+      const double v = (*value)[i];
+      if (!std::isnan(v)) {
+        if (lo == n || v < (*value)[lo]) lo = i;
+        if (hi == n || v > (*value)[hi]) hi = i;
+      }
+      if (++count == block) close_block();
+    }
+    close_block();
+  }
+
   std::vector<std::size_t> keep;
   std::size_t ordinal_in = 0;
   std::size_t ordinal_out = 0;
@@ -55,7 +83,8 @@ std::vector<std::size_t> downsample_indices(const std::vector<double>& time_s,
     const bool first_or_last = i == 0 || i + 1 == n;
     bool take = false;
     if (inside[i] != 0) {
-      take = ordinal_in % stride_in == 0 || ordinal_in + 1 == n_inside;
+      take = extremes ? extreme[i] != 0 || ordinal_in == 0 || ordinal_in + 1 == n_inside
+                      : ordinal_in % stride_in == 0 || ordinal_in + 1 == n_inside;
       ++ordinal_in;
     } else {
       take = ordinal_out % stride_out == 0 || ordinal_out + 1 == n_outside;

@@ -18,12 +18,16 @@ struct TimeWindow {
 
 // Indices (ascending) of the samples of `time_s` (ascending) to keep: the
 // first and the last sample, every sample inside a window of `windows`
-// (merged) but at most `max_inside` of them (evenly strided beyond that), and
-// at most `max_outside` of the samples outside the windows, evenly strided.
+// (merged) but at most about `max_inside` of them, and at most `max_outside`
+// of the samples outside the windows, evenly strided. Beyond `max_inside`
+// (a sustained contact), the inside samples are thinned evenly, or, given
+// `value` (same length as `time_s`), by keeping the lowest and the highest
+// sample of each run of consecutive inside samples, so that peaks survive.
 [[nodiscard]] std::vector<std::size_t> downsample_indices(const std::vector<double>& time_s,
                                                           const std::vector<TimeWindow>& windows,
                                                           std::size_t max_outside,
-                                                          std::size_t max_inside);
+                                                          std::size_t max_inside,
+                                                          const std::vector<double>* value = nullptr);
 
 // Indices (ascending) of a min-max decimation of the samples with t in
 // [t0_s, t1_s] into `buckets` equal time buckets: per bucket its first, lowest,

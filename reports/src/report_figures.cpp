@@ -294,7 +294,8 @@ PlotSeries downsample(const std::string& engine, const RawSeries& raw,
   PlotSeries s;
   s.engine = engine;
   s.full_points = raw.time_s.size();
-  const auto keep = downsample_indices(raw.time_s, windows, limits.max_outside, limits.max_inside);
+  const auto keep =
+      downsample_indices(raw.time_s, windows, limits.max_outside, limits.max_inside, &raw.value);
   s.time_s.reserve(keep.size());
   s.value.reserve(keep.size());
   for (const std::size_t i : keep) {

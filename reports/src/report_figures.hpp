@@ -18,8 +18,8 @@ namespace pb::internal {
 
 // how long series are thinned for embedding (report_downsample.hpp)
 struct FigureLimits {
-  std::size_t max_outside = 5000;   // samples per series outside contact windows
-  std::size_t max_inside = 200000;  // samples per series inside them (a guard for huge runs)
+  std::size_t max_outside = 2000;  // samples per series outside contact windows
+  std::size_t max_inside = 3000;   // samples per series inside them (extremes kept beyond)
 };
 
 // The runs of a case in report order: analytic, reference, mujoco, box2d, ode

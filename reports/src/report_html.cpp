@@ -142,6 +142,7 @@ nlohmann::json report_data_json(const Report& report) {
   data["grids"] = grids;
   data["cases"] = cases;
 
+  if (!report.verdict.rows.empty()) data["verdict"] = table_json(report.verdict);
   nlohmann::json tables = nlohmann::json::array();
   for (const auto& t : report.tables) tables.push_back(table_json(t));
   data["tables"] = tables;

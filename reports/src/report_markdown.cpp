@@ -121,6 +121,8 @@ std::string report_markdown(const Report& report) {
       "static SVG files in `figures/`, each series min-max decimated to the plot's pixel "
       "columns so that peaks survive.\n\n";
 
+  if (!report.verdict.rows.empty()) section_table(md, report.verdict);
+
   // contents
   md += "Contents:\n";
   for (const auto& c : report.cases) md += fmt::format("- [{}](#{})\n", c.name, anchor(c.name));

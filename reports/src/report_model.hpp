@@ -109,6 +109,7 @@ struct Report {
   std::vector<std::pair<std::string, std::string>> provenance;  // key, value
   std::string downsampling_note;
   std::vector<CaseSection> cases;
+  Table verdict;              // first on the page: per case, engines ranked (report_verdict.hpp)
   std::vector<Table> tables;  // capability, timings, metrics, checks, provenance
   std::vector<MappingEntry> mappings;
   std::string sweep_file;           // "" when no --sweep

@@ -1,7 +1,8 @@
 // planarbench report page: renders the embedded report data (JSON in
 // #pb-data) into figures (uPlot) and tables. Every text goes in through
 // textContent, never as HTML. When the charts are drawn it publishes
-// window.planarbenchReport = { charts: [{ id, title, series: [{ engine, points }] }] }
+// window.planarbenchReport = { charts: [{ id, title, paperFigure,
+//   series: [{ engine, points, tLast }], errorPanel: { against, series } | null }] }
 // for the browser test (tests/report/browser_test.mjs).
 (function () {
   'use strict';
@@ -31,11 +32,16 @@
   function renderHeader() {
     const h = document.getElementById('pb-header');
     h.appendChild(el('h1', {}, 'planarbench report'));
-    if (data.results_file) h.appendChild(el('p', {}, 'Results file: ', el('code', {}, data.results_file)));
-    if (data.sweep_file) h.appendChild(el('p', {}, 'Sweep file: ', el('code', {}, data.sweep_file)));
-    if (data.thresholds_file) {
-      h.appendChild(el('p', {}, 'Thresholds: ', el('code', {}, data.thresholds_file)));
+    // the inputs on one line
+    const files = el('p', {});
+    for (const [label, file] of [['Results file', data.results_file], ['sweep file', data.sweep_file],
+      ['thresholds', data.thresholds_file]]) {
+      if (!file) continue;
+      if (files.childNodes.length) files.appendChild(document.createTextNode('; '));
+      files.appendChild(document.createTextNode(label + ': '));
+      files.appendChild(el('code', {}, file));
     }
+    if (files.childNodes.length) h.appendChild(files);
     if (data.check_summary) {
       const failed = !/, 0 failed$/.test(data.check_summary);
       h.appendChild(el('p', { class: failed ? 'summary-fail' : 'summary-pass' },
@@ -45,12 +51,9 @@
     const bits = ['utc_time', 'build_revision', 'host'].filter((k) => prov[k])
       .map((k) => k + ' ' + prov[k]);
     if (bits.length) h.appendChild(el('p', {}, 'Run: ' + bits.join(', ')));
-    if (data.results_file) {
-      h.appendChild(el('p', { class: 'note' }, data.downsampling +
-        ' Drag across a plot to zoom in time, double-click to zoom out; click a legend entry to hide or show its series.'));
-    }
 
     const nav = document.getElementById('pb-nav');
+    if (data.verdict) nav.appendChild(el('a', { href: '#table-verdict' }, 'Verdict'));
     for (const c of data.cases) nav.appendChild(el('a', { href: '#case-' + slug(c.name) }, c.name));
     if (hasWorkPrecision()) nav.appendChild(el('a', { href: '#work-precision' }, 'Work-precision'));
     for (const t of data.tables) nav.appendChild(el('a', { href: '#table-' + slug(t.id) }, t.title));
@@ -62,6 +65,11 @@
 
   function seriesLabel(s) {
     return s.engine === 'analytic' ? 'analytic (truth)' : s.engine;
+  }
+
+  // the chart fills its column, down to a phone's width
+  function chartWidth(container) {
+    return Math.max(240, container.clientWidth || 900);
   }
 
   function makeChart(fig, container) {
@@ -79,7 +87,9 @@
       series.push({
         label: seriesLabel(s),
         stroke: s.colour,
-        width: 1.5,
+        // the reference is drawn first and wider: where an engine's line
+        // coincides with it, its edges stay visible
+        width: s.engine === 'reference' ? 3.5 : 1.5,
         dash: truth ? [6, 4] : undefined,
         value: (u, v) => (v === null || v === undefined ? '-' : v.toPrecision(6)),
       });
@@ -89,7 +99,7 @@
     const clip = typeof fig.y_clip === 'number' ? fig.y_clip : null;
     const view = { fitAll: clip === null };
     const opts = {
-      width: Math.max(400, container.clientWidth || 900),
+      width: chartWidth(container),
       height: 320,
       scales: {
         x: { time: false },
@@ -116,6 +126,94 @@
     return { u, fullRange, view, clip, order };
   }
 
+  // The error panel under a figure: |series - yardstick| against time, log
+  // scale, the yardstick (the truth, else the reference) linearly
+  // interpolated at each series' own sample times. Its x range follows the
+  // figure's zoom. Returns null when there is nothing to compare.
+  function makeErrorChart(fig, container, mainU) {
+    const base = fig.series.find((s) => s.engine === 'analytic') ||
+      fig.series.find((s) => s.engine === 'reference');
+    if (!base || fig.series.length < 2) return null;
+    const bt = data.grids[base.grid];
+    const by = base.y;
+    const at = (t) => {
+      if (!bt.length || t < bt[0] || t > bt[bt.length - 1]) return null;
+      let lo = 0;
+      let hi = bt.length - 1;
+      while (hi - lo > 1) {
+        const mid = (lo + hi) >> 1;
+        if (bt[mid] <= t) lo = mid; else hi = mid;
+      }
+      const y0 = by[lo];
+      const y1 = by[hi];
+      if (y0 === null || y1 === null) return null;
+      if (bt[hi] === bt[lo]) return y0;
+      const w = (t - bt[lo]) / (bt[hi] - bt[lo]);
+      return y0 + w * (y1 - y0);
+    };
+    const others = fig.series.filter((s) => s !== base);
+    let any = false;
+    const tables = others.map((s) => {
+      const ts = data.grids[s.grid];
+      const es = ts.map((t, i) => {
+        const b = at(t);
+        const y = s.y[i];
+        if (b === null || y === null) return null;
+        const d = Math.abs(y - b);
+        if (!(d > 0) || !Number.isFinite(d)) return null;  // exact agreement: a gap on a log axis
+        any = true;
+        return Math.log10(d);
+      });
+      return [ts, es];
+    });
+    const label = base.engine === 'analytic' ? 'truth' : 'reference';
+    if (!any) {
+      container.appendChild(el('p', { class: 'note' }, 'Error panel: every series equals the ' + label + ' at every sample.'));
+      return null;
+    }
+    const unit = (fig.y_label.split(', ')[1] || '');
+    const aligned = uPlot.join(tables);
+    // log10 of the error on a linear axis labelled in decades (uPlot's own
+    // log axis lays out ticks over the whole range of every series: slow and
+    // fragile over 20 decades)
+    const u = new uPlot({
+      width: chartWidth(container),
+      height: 170,
+      scales: {
+        x: { time: false },
+        y: { range: (uu, min, max) => [Math.floor(min), Math.max(Math.ceil(max), Math.floor(min) + 1)] },
+      },
+      series: [{ label: 't, s', value: (uu, v) => (v === null || v === undefined ? '-' : v.toPrecision(7)) }]
+        .concat(others.map((s) => ({
+          label: '|' + s.engine + ' - ' + label + '|',
+          stroke: s.colour,
+          width: s.engine === 'reference' ? 2.5 : 1.2,
+          value: (uu, v) => (v === null || v === undefined ? '-' : Math.pow(10, v).toPrecision(3)),
+        }))),
+      axes: [{ label: 'time, s' }, {
+        label: '|error|' + (unit ? ', ' + unit : ''),
+        size: 72,
+        incrs: [1, 2, 3, 5, 10, 20],
+        values: (uu, vals) => vals.map((v) => (Number.isInteger(v) ? '1e' + v : '')),
+      }],
+      cursor: { drag: { x: true, y: false } },
+      legend: { live: true },
+    }, aligned, container);
+    container.appendChild(el('p', { class: 'hint' }, 'Error panel: |series - ' + label + '| on a log ' +
+      'scale, the ' + label + ' interpolated at each series\u2019 samples. The page holds 7 significant ' +
+      'digits per value, so an error below ~1e-7 of the value is a gap here (the metrics table has ' +
+      'the full-precision errors).'));
+    // the panel follows the figure's time range
+    (mainU.hooks.setScale = mainU.hooks.setScale || []).push((mu, key) => {
+      if (key === 'x') u.setScale('x', { min: mu.scales.x.min, max: mu.scales.x.max });
+    });
+    return { u, against: label, series: others.map((s, i) => {
+      let points = 0;
+      for (const v of aligned[i + 1] || []) if (typeof v === 'number' && Number.isFinite(v)) points++;
+      return { engine: s.engine, points };
+    }) };
+  }
+
   function renderFigure(fig, parent) {
     const box = el('div', { class: 'figure', id: 'fig-' + fig.id });
     box.appendChild(el('h3', {}, fig.title));
@@ -136,6 +234,9 @@
       return;
     }
     const { u, fullRange, view, clip, order } = makeChart(fig, chartDiv);
+    const errorDiv = el('div', { class: 'chart error-panel' });
+    box.insertBefore(errorDiv, chartDiv.nextSibling);
+    const errorChart = makeErrorChart(fig, errorDiv, u);
     controls.appendChild(el('button', { type: 'button', onclick: fullRange }, 'reset zoom'));
     if (clip !== null) {
       const off = fig.series.filter((s) => s.off_scale).map((s) => s.engine).join(', ');
@@ -154,17 +255,34 @@
         onclick: () => u.setScale('x', { min: ep.t0, max: ep.t1 }),
       }, 'zoom to ' + ep.label));
     }
-    const entry = { id: fig.id, title: fig.title, uplot: u, series: [] };
+    const entry = {
+      id: fig.id,
+      title: fig.title,
+      paperFigure: fig.paper_figure,
+      uplot: u,
+      errorUplot: errorChart ? errorChart.u : null,
+      errorPanel: errorChart ? { against: errorChart.against, series: errorChart.series } : null,
+      series: [],
+    };
+    const xs = u.data[0] || [];
     order.forEach((s, i) => {
       const ys = u.data[i + 1] || [];
       let points = 0;
-      for (const v of ys) if (typeof v === 'number' && Number.isFinite(v)) points++;
-      entry.series.push({ engine: s.engine, points: points });
+      let tLast = null;
+      ys.forEach((v, k) => {
+        if (typeof v === 'number' && Number.isFinite(v)) { points++; tLast = xs[k]; }
+      });
+      entry.series.push({ engine: s.engine, points: points, tLast: tLast });
     });
     charts.push(entry);
   }
 
   function renderCases(main) {
+    // how the figures are drawn: once, before the first case
+    if (data.results_file && data.cases.length) {
+      main.appendChild(el('p', { class: 'note' }, data.downsampling +
+        ' Drag across a plot to zoom in time, double-click to zoom out; click a legend entry to hide or show its series.'));
+    }
     for (const c of data.cases) {
       const sec = el('section', { id: 'case-' + slug(c.name) });
       sec.appendChild(el('h2', {}, c.name));
@@ -315,6 +433,8 @@
   renderHeader();
   const main = document.getElementById('pb-main');
   main.removeChild(document.getElementById('pb-loading'));
+  // the answer first: which engine, how wrong, at what cost
+  if (data.verdict) renderTable(data.verdict, main);
   renderCases(main);
   renderWorkPrecision(main);
   for (const t of data.tables) renderTable(t, main);
@@ -325,7 +445,8 @@
     clearTimeout(resizeTimer);
     resizeTimer = setTimeout(() => {
       for (const c of charts) {
-        if (c.uplot) c.uplot.setSize({ width: Math.max(400, c.uplot.root.parentNode.clientWidth), height: 320 });
+        if (c.uplot) c.uplot.setSize({ width: chartWidth(c.uplot.root.parentNode), height: 320 });
+        if (c.errorUplot) c.errorUplot.setSize({ width: chartWidth(c.errorUplot.root.parentNode), height: 170 });
       }
     }, 150);
   });
@@ -333,7 +454,9 @@
   // published once the browser has painted the charts
   requestAnimationFrame(() => {
     window.planarbenchReport = {
-      charts: charts.map((c) => ({ id: c.id, title: c.title, series: c.series })),
+      charts: charts.map((c) => ({
+        id: c.id, title: c.title, paperFigure: c.paperFigure, series: c.series, errorPanel: c.errorPanel,
+      })),
     };
   });
 })();

@@ -1,9 +1,14 @@
 // Browser test of `planarbench report` (SPEC §6): runs the falling_ball case
-// on every engine, writes the report, opens report.html in Debian's headless
-// Chromium through playwright-core, and checks that the page renders without
-// a console error or page error, fetches nothing, and that every chart holds
-// data from every engine whose run is ok. Saves a screenshot of the
-// falling-ball force figure (paper Fig. 5) next to the test.
+// (closed-form truth) and falling_ball_paper (no truth) on every engine,
+// writes the report, opens report.html in Debian's headless Chromium through
+// playwright-core, and checks that the page renders without a console error
+// or page error, fetches nothing, and that every chart holds data from every
+// engine whose run is ok. At 1440x900 and 390x844 (issue 13): no horizontal
+// overflow, the verdict in the first screen naming each case's best engine
+// and every ok engine's error, which must match the largest position error
+// computed here with h5py from the results file. Saves screenshots of the
+// first screen at both sizes and of the falling-ball force figure (paper
+// Fig. 5) next to the test.
 //
 // Usage: node browser_test.mjs --planarbench EXE --web-dir DIR --work DIR
 // Needs node >= 20, the npm packages of reports/web (scripts/setup_web.sh
@@ -53,6 +58,9 @@ const work = path.resolve(args.work);
 fs.rmSync(work, { recursive: true, force: true });
 fs.mkdirSync(work, { recursive: true });
 const results = path.join(work, 'falling_ball.h5');
+// a closed-form truth, no truth, and a truth that is the converged reference
+// after the first impact (issue 13: drawn through the impacts)
+const CASES = ['falling_ball', 'falling_ball_paper', 'dual_pendulum'];
 const reportDir = path.join(work, 'report');
 
 function run(argv, okCodes) {
@@ -67,7 +75,7 @@ function run(argv, okCodes) {
   return r;
 }
 // exit 3 (a run diverged) still writes the file: the report must show it
-run(['run', '--case', 'falling_ball', '--engine', ENGINES.join(','), '--out', results, '--quiet'], [0, 3]);
+run(['run', '--case', CASES.join(','), '--engine', ENGINES.join(','), '--out', results, '--quiet'], [0, 3]);
 run(['report', results, '--out', reportDir], [0]);
 const html = path.join(reportDir, 'report.html');
 check(fs.existsSync(html), 'report.html written');
@@ -76,14 +84,37 @@ check(fs.existsSync(path.join(reportDir, 'figures', 'falling_ball_fig5.svg')), '
 
 // the engines whose run is ok, read from the results file with h5py (not
 // from the page under test)
+// and each ok engine's largest position error against the case's yardstick
+// (the analytic run where there is one, else the reference), on the common
+// output grid: the truth the verdict's numbers are checked against
 const py = spawnSync('/usr/bin/python3', ['-c', [
   'import h5py, sys, json',
+  'import numpy as np',
   'f = h5py.File(sys.argv[1], "r")',
-  'g = f["runs/falling_ball"]',
-  'print(json.dumps({e: str(g[e].attrs["status"]) for e in g}))',
-].join('\n'), results], { encoding: 'utf8' });
-if (py.status !== 0) fatal(`cannot read the run statuses with h5py (scripts/setup.sh installs python3-h5py): ${py.stderr}`);
-const statuses = JSON.parse(py.stdout);
+  'out = {}',
+  'for case in sys.argv[2:]:',
+  '    g = f["runs/" + case]',
+  '    st = {e: str(g[e].attrs["status"]) for e in g}',
+  '    base = "analytic" if st.get("analytic") == "ok" else "reference"',
+  '    err = {}',
+  '    for e in g:',
+  '        if e in ("analytic", base) or st[e] != "ok": continue',
+  '        worst = 0.0',
+  '        for b in g[base]["bodies"]:',
+  '            tb = g[base]["bodies"][b]["time"][:]; pb = g[base]["bodies"][b]["position"][:]',
+  '            te = g[e]["bodies"][b]["time"][:]; pe = g[e]["bodies"][b]["position"][:]',
+  '            n = min(len(tb), len(te))',
+  '            assert np.allclose(tb[:n], te[:n], rtol=0, atol=1e-12), "grids differ"',
+  '            worst = max(worst, float(np.max(np.linalg.norm(pe[:n] - pb[:n], axis=1))))',
+  '        err[e] = worst',
+  '    ev = g["reference"]["events"]',
+  '    onset = float(ev[0]["onset_time"]) if ev.shape[0] else None',
+  '    out[case] = {"status": st, "base": base, "error": err, "first_onset": onset}',
+  'print(json.dumps(out))',
+].join('\n'), results, ...CASES], { encoding: 'utf8' });
+if (py.status !== 0) fatal(`cannot read the runs with h5py (scripts/setup.sh installs python3-h5py): ${py.stderr}`);
+const truthOf = JSON.parse(py.stdout);
+const statuses = truthOf.falling_ball.status;
 const okEngines = Object.keys(statuses).filter((e) => statuses[e] === 'ok');
 console.log('run statuses: ' + JSON.stringify(statuses));
 check(okEngines.length > 0, 'at least one engine ran falling_ball ok');
@@ -124,16 +155,38 @@ try {
 
   // every chart holds data from every engine whose run is ok
   check(report.charts.length >= 2, `page has ${report.charts.length} charts (falling_ball: Figs 5 and 6 at least)`);
+  // a chart's case: the longest case name its id starts with
+  const byLength = [...CASES].sort((a, b) => b.length - a.length);
   for (const chart of report.charts) {
-    for (const engine of okEngines) {
+    const c = byLength.find((name) => chart.id.startsWith(name + '_'));
+    if (!check(c !== undefined, `chart ${chart.id} belongs to a case that ran`)) continue;
+    const st = truthOf[c].status;
+    const ok = Object.keys(st).filter((e) => st[e] === 'ok');
+    for (const engine of ok) {
       const s = chart.series.find((x) => x.engine === engine);
       check(s !== undefined && s.points > 0,
         `chart ${chart.id}: ${engine} has ${s ? s.points : 0} points`);
     }
     for (const s of chart.series) {
-      check(okEngines.includes(s.engine), `chart ${chart.id}: series ${s.engine} is of an ok run`);
+      check(ok.includes(s.engine), `chart ${chart.id}: series ${s.engine} is of an ok run`);
     }
   }
+  // every reproduced paper figure has an error panel with data, and the
+  // dual pendulum's truth is drawn past its first impact
+  const paperFigures = report.charts.filter((c) => c.paperFigure);
+  check(paperFigures.length >= 6, `${paperFigures.length} reproduced paper figures (falling_ball 2, dual_pendulum 4 at least)`);
+  for (const chart of paperFigures) {
+    const e = chart.errorPanel;
+    check(e !== null && e.series.some((s) => s.points > 0),
+      `${chart.id} (${chart.paperFigure}): error panel against the ${e ? e.against : '-'} with ${e ? e.series.map((s) => s.engine + ' ' + s.points).join(', ') : 'no'} points`);
+  }
+  const onset = truthOf.dual_pendulum.first_onset;
+  for (const chart of report.charts.filter((c) => c.id.startsWith('dual_pendulum_'))) {
+    const truth = chart.series.find((s) => s.engine === 'analytic');
+    check(truth !== undefined && onset !== null && truth.tLast > onset + 0.1,
+      `${chart.id}: the truth is drawn past the first impact (to t = ${truth ? truth.tLast : '-'} s; onset ${onset} s)`);
+  }
+
   const fig5 = report.charts.find((c) => c.id === 'falling_ball_fig5');
   check(fig5 !== undefined && fig5.title.startsWith('Fig. 5'), 'falling_ball Fig. 5 (contact force) is on the page');
 
@@ -142,6 +195,63 @@ try {
     const rows = await page.locator(`#tbl-${id} tbody tr`).count();
     check(rows > 0, `table ${id} has ${rows} rows`);
   }
+
+  // the first screen at a laptop's and a phone's size
+  for (const [width, height] of [[1440, 900], [390, 844]]) {
+    await page.setViewportSize({ width, height });
+    await page.evaluate(() => window.scrollTo(0, 0));
+    await page.waitForTimeout(400);  // the charts' resize handler waits 150 ms
+    const size = `${width}x${height}`;
+    const layout = await page.evaluate(() => {
+      const v = document.getElementById('table-verdict');
+      const box = v ? v.getBoundingClientRect() : null;
+      const rows = v ? [...v.querySelectorAll('tbody tr')].map((tr) =>
+        [...tr.querySelectorAll('td')].map((td) => td.textContent)) : [];
+      return {
+        scrollWidth: document.documentElement.scrollWidth,
+        innerWidth: window.innerWidth,
+        innerHeight: window.innerHeight,
+        top: box ? box.top : null,
+        bottom: box ? box.bottom : null,
+        rows,
+      };
+    });
+    check(layout.scrollWidth <= layout.innerWidth,
+      `${size}: no horizontal overflow (page ${layout.scrollWidth} px wide in ${layout.innerWidth} px)`);
+    check(layout.top !== null && layout.top >= 0 && layout.top < layout.innerHeight,
+      `${size}: the verdict starts in the first screen (top at ${layout.top} px)`);
+    // a laptop sees the whole verdict without scrolling
+    if (width >= 1440) {
+      check(layout.bottom !== null && layout.bottom <= layout.innerHeight,
+        `${size}: the whole verdict is in the first screen (bottom at ${layout.bottom} px)`);
+    }
+    const shot = path.join(path.dirname(work), `report_first_screen_${size}.png`);
+    await page.screenshot({ path: shot });
+    check(fs.statSync(shot).size > 10000, `screenshot ${shot}`);
+    if (width !== 1440) continue;
+    // the verdict's numbers against h5py's: each case names its best engine
+    // and every ok engine's error, two significant digits as printed
+    for (const c of CASES) {
+      const row = layout.rows.find((r) => r[0] === c);
+      if (!check(row !== undefined, `verdict has a row for ${c}`)) continue;
+      const errs = truthOf[c].error;
+      const engines = Object.keys(errs);
+      const best = engines.reduce((a, b) => (errs[b] < errs[a] ? b : a), engines[0]);
+      check(row[2] === best, `verdict ${c}: best engine ${row[2]} (h5py: ${best}, ${errs[best]} m)`);
+      for (const e of engines) {
+        const m = row[3].match(new RegExp(`(?:^|; )${e} ([0-9.e+-]+) \\(`));
+        const shown = m ? Number(m[1]) : NaN;
+        // the page prints two significant digits: within half a unit of the
+        // second digit, 5 % of the value
+        check(Math.abs(shown - errs[e]) <= 0.05 * errs[e],
+          `verdict ${c}: ${e} error ${m ? m[1] : 'missing'} m (h5py ${errs[e].toPrecision(3)} m against ${truthOf[c].base})`);
+      }
+      if (truthOf[c].base !== 'analytic') {
+        check(/no truth/.test(row[4]), `verdict ${c}: flagged as measured against the reference, not a truth`);
+      }
+    }
+  }
+  await page.setViewportSize({ width: 1280, height: 900 });
 
   // the force figure, whole and zoomed into the first contact episode
   const figure = page.locator('#fig-falling_ball_fig5');

@@ -73,6 +73,35 @@ TEST(DownsampleIndices, InsideBudgetGuardsHugeWindows) {
   EXPECT_EQ(keep.back(), 10000u);
 }
 
+// a sustained contact thinned with its values keeps a one-sample spike and a
+// one-sample dip that an even stride would step over, within the same budget
+TEST(DownsampleIndices, InsideBudgetWithValuesKeepsPeaks) {
+  const auto t = grid(10001, 1e-4);
+  std::vector<double> v(t.size());
+  for (std::size_t k = 0; k < v.size(); ++k) v[k] = std::sin(3.0 * t[k]);
+  const std::size_t spike = 4567;  // not a multiple of the stride (11): an even stride misses it
+  const std::size_t dip = 7891;
+  v[spike] = 50.0;
+  v[dip] = -50.0;
+  const auto even = downsample_indices(t, {{0.0, 1.0}}, 5000, 1000);
+  ASSERT_EQ(std::count(even.begin(), even.end(), spike), 0);  // the case this mode exists for
+  const auto keep = downsample_indices(t, {{0.0, 1.0}}, 5000, 1000, &v);
+  EXPECT_EQ(std::count(keep.begin(), keep.end(), spike), 1);
+  EXPECT_EQ(std::count(keep.begin(), keep.end(), dip), 1);
+  // two per block of 2 x 11 samples: 10001 / 22 blocks x 2 = 910, + first and last
+  EXPECT_LE(keep.size(), 1001u);
+  EXPECT_GE(keep.size(), 900u);
+  EXPECT_TRUE(std::is_sorted(keep.begin(), keep.end()));
+  EXPECT_EQ(keep.front(), 0u);
+  EXPECT_EQ(keep.back(), 10000u);
+  // a NaN is never chosen as an extreme and does not hide its block's peak
+  v[100] = std::numeric_limits<double>::quiet_NaN();
+  v[101] = 40.0;
+  const auto with_nan = downsample_indices(t, {{0.0, 1.0}}, 5000, 1000, &v);
+  EXPECT_EQ(std::count(with_nan.begin(), with_nan.end(), 100u), 0);
+  EXPECT_EQ(std::count(with_nan.begin(), with_nan.end(), 101u), 1);
+}
+
 // a single-sample spike among 10000 smooth samples survives decimation into
 // 50 buckets, and so do the samples just outside the range
 TEST(MinmaxIndices, KeepsThePeakAndTheRangeEdges) {

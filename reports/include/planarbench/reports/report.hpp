@@ -29,7 +29,13 @@ struct ReportOptions {
   // node_modules/uplot; empty: $PLANARBENCH_WEB_DIR, else the source tree's
   // reports/web
   std::filesystem::path web_dir;
-  std::size_t max_points_outside_contact = 5000;  // per series, in the page
+  // per series, in the page: a chart is at most ~1900 px wide, so 2000
+  // evenly spaced samples draw a smooth stretch as the full series would
+  std::size_t max_points_outside_contact = 2000;
+  // per series inside contact windows: an impact's window is kept whole (the
+  // shipped cases' impacts span at most ~700 output samples, padding included);
+  // a sustained contact longer than this keeps each block's extremes
+  std::size_t max_points_inside_contact = 3000;
   // called with the thresholds and the results once both are read, before
   // anything is computed or written (the command line checks the names the
   // thresholds use); empty: no check
