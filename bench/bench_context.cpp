@@ -8,6 +8,7 @@
 
 #include "planarbench/build_info.hpp"
 #include "planarbench/engines.hpp"
+#include "planarbench/machine.hpp"
 
 namespace pb::bench {
 
@@ -73,7 +74,7 @@ void add_context() {
 
   // the machine, beyond the library's host name and CPU count: the CPU model
   // (x86 /proc/cpuinfo) and the OS
-  benchmark::AddCustomContext("machine_cpu_model", line_value("/proc/cpuinfo", "model name\t: "));
+  benchmark::AddCustomContext("machine_cpu_model", machine_cpu_model());
   benchmark::AddCustomContext("machine_os", line_value("/etc/os-release", "PRETTY_NAME="));
 }
 

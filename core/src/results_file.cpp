@@ -26,6 +26,7 @@
 #include "planarbench/run_spool.hpp"
 #include "planarbench/build_info.hpp"
 #include "planarbench/errors.hpp"
+#include "planarbench/machine.hpp"
 #include "planarbench/output_file.hpp"
 
 namespace pb {
@@ -81,6 +82,9 @@ void write_parameters(hid_t file, const ResultsProvenance& p) {
   internal::write_string_attribute(g.get(), "compiler_flags", build_info::kFlags);
   internal::write_string_attribute(g.get(), "build_type", build_info::kBuildType);
   internal::write_string_attribute(g.get(), "host", p.host);
+  // the machine behind every wall time in the file
+  internal::write_string_attribute(g.get(), "machine_cpu_model", machine_cpu_model());
+  internal::write_string_attribute(g.get(), "machine_cpus", std::to_string(machine_cpus()));
   internal::write_string_attribute(g.get(), "utc_time", p.utc_time);
   internal::write_string_attribute(g.get(), "planarbench_version", build_info::kVersion);
   internal::write_string_attribute(g.get(), "command_line", p.command_line);

@@ -48,8 +48,10 @@
         'Check: ' + data.check_summary));
     }
     const prov = Object.fromEntries(data.provenance || []);
-    const bits = ['utc_time', 'build_revision', 'host'].filter((k) => prov[k])
-      .map((k) => k + ' ' + prov[k]);
+    // when, which build, and the machine every wall time was measured on
+    const bits = [['utc_time', ''], ['build_revision', 'revision '], ['host', 'host '],
+      ['machine_cpu_model', 'CPU '], ['machine_cpus', 'CPUs ']].filter(([k]) => prov[k])
+      .map(([k, label]) => label + prov[k]);
     if (bits.length) h.appendChild(el('p', {}, 'Run: ' + bits.join(', ')));
 
     const nav = document.getElementById('pb-nav');
