@@ -57,6 +57,7 @@ MetricValue metric(const Case& c, const RunResult& run, const std::string& again
   m.desired = desired;
   m.error = relative ? std::abs(actual - desired) / std::abs(desired) : std::abs(actual - desired);
   m.unit = relative ? "1" : unit;
+  m.value_unit = unit;
   return m;
 }
 
@@ -160,10 +161,11 @@ void episode_metrics(const Case& c, const RunResult& run, const RunResult& base,
         out.push_back(m);
       };
       add("impact_time", a.onset_time_s, d.onset_time_s, false, "s");
+      // the unit given is the quantity's; a relative error's own is "1"
       add("contact_duration", a.offset_time_s - a.onset_time_s, d.offset_time_s - d.onset_time_s,
-          true, "1");
-      add("peak_force", a.peak_force_n, d.peak_force_n, true, "1");
-      add("impulse", a.impulse_ns, d.impulse_ns, true, "1");
+          true, "s");
+      add("peak_force", a.peak_force_n, d.peak_force_n, true, "N");
+      add("impulse", a.impulse_ns, d.impulse_ns, true, "N s");
       add("restitution", a.restitution, d.restitution, false, "1");
       add("max_penetration", a.max_penetration_m, d.max_penetration_m, false, "m");
     }

@@ -283,7 +283,8 @@ std::vector<ZoomWindow> zoom_windows(const Case& c, const RunResult* source, int
     const double t1 = episode_end(c, *source, e);
     // half the episode's length on each side, at least five output intervals
     const double pad = std::max(0.5 * (t1 - e.onset_time_s), 5.0 * c.output_interval_s);
-    out.push_back(ZoomWindow{fmt::format("episode {}", k + 1), std::max(0.0, e.onset_time_s - pad),
+    // counted from 0, as the metrics and the thresholds file count episodes
+    out.push_back(ZoomWindow{fmt::format("episode {}", k), std::max(0.0, e.onset_time_s - pad),
                              std::min(c.duration_s, t1 + pad)});
   }
   return out;

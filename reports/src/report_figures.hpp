@@ -18,7 +18,7 @@ namespace pb::internal {
 
 // how long series are thinned for embedding (report_downsample.hpp)
 struct FigureLimits {
-  std::size_t max_outside = 2000;  // samples per series outside contact windows
+  std::size_t max_outside = 1500;  // samples per series outside contact windows
   std::size_t max_inside = 3000;   // samples per series inside them (extremes kept beyond)
 };
 

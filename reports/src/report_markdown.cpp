@@ -76,8 +76,8 @@ std::vector<FigureView> figure_views(const Figure& f) {
   if (f.quantity == Quantity::force && !f.episodes.empty()) {
     const auto& e = f.episodes.front();
     views.push_back(FigureView{
-        "figures/" + f.id + "_episode1.svg",
-        f.title + fmt::format(" (zoom: episode 1, t = {:.4g} to {:.4g} s)", e.t0_s, e.t1_s), e.t0_s,
+        "figures/" + f.id + "_episode0.svg",
+        f.title + fmt::format(" (zoom: {}, t = {:.4g} to {:.4g} s)", e.label, e.t0_s, e.t1_s), e.t0_s,
         e.t1_s});
   }
   return views;

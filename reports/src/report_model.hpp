@@ -27,7 +27,7 @@ struct PlotSeries {
 
 // a time window a figure can zoom to: one contact episode
 struct ZoomWindow {
-  std::string label;  // "episode 1"
+  std::string label;  // "episode 0" (counted from 0, as the metrics)
   double t0_s = 0.0;  // s
   double t1_s = 0.0;  // s
 };

@@ -145,17 +145,34 @@ Table metrics_table(const std::vector<MetricValue>& metrics,
   t.note =
       "Every SPEC §4 metric: each engine against the truth, against the reference and against "
       "each other engine, and each run's own metrics (against = self). value = the run's "
-      "quantity, desired = the baseline's; error is absolute or relative as the metric defines.";
-  t.columns = {"case",  "engine",  "against", "metric", "episode",
-               "value", "desired", "error",   "unit"};
+      "quantity, desired = the baseline's, both in `unit`; error is absolute or relative as the "
+      "metric defines. Gated checks first (with the bound behind each limit), then the "
+      "comparisons with the truth, then the rest. Episodes count from 0, as in the thresholds "
+      "file.";
+  t.columns = {"case",  "engine", "against",    "metric", "episode", "value",
+               "desired", "unit",  "error", "error unit"};
   if (with_checks) {
     t.columns.push_back("limit");
     t.columns.push_back("result");
+    t.columns.push_back("why (the bound the limit comes from)");
   }
   t.columns.push_back("note");
-  for (const auto& m : metrics) {
+  // gated checks first, then the comparisons with the truth, then the rest;
+  // each group in the metrics' own order
+  std::vector<std::size_t> order(metrics.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  auto group = [&](const MetricValue& m) {
+    if (checked.count(key_of(m)) != 0) return 0;
+    return m.against == "truth" ? 1 : 2;
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return group(metrics[a]) < group(metrics[b]);
+  });
+  for (const std::size_t i : order) {
+    const MetricValue& m = metrics[i];
     std::string limit;
     std::string result;
+    std::string why;
     std::string note = m.note;
     const auto it = checked.find(key_of(m));
     if (it != checked.end()) {
@@ -168,11 +185,17 @@ Table metrics_table(const std::vector<MetricValue>& metrics,
         if (!o->message.empty()) note += (note.empty() ? "" : "; ") + o->message;
         if (!o->passed || fails_gate(*o)) label = outcome_label(*o);
         if (o->threshold.by_construction) note += (note.empty() ? "" : "; ") + std::string("holds by construction");
+        if (!o->threshold.why.empty()) why += (why.empty() ? "" : "; ") + o->threshold.why;
+        if (!o->threshold.known_breach.empty()) {
+          why += (why.empty() ? "" : "; ") + std::string("known breach: ") + o->threshold.known_breach;
+        }
       }
       limit = format_number(tightest);
       // a known breach is a failure to show, not a pass (SPEC §5b)
       result = passed && label == "pass" ? "pass" : label;
     }
+    // "1" is a relative error's unit, or a dimensionless quantity's
+    const bool relative = m.unit == "1" && !m.value_unit.empty() && m.value_unit != "1";
     std::vector<std::string> row{m.case_name,
                                  m.engine,
                                  m.against,
@@ -180,11 +203,13 @@ Table metrics_table(const std::vector<MetricValue>& metrics,
                                  m.episode >= 0 ? std::to_string(m.episode) : "",
                                  format_number(m.actual),
                                  format_number(m.desired),
+                                 m.value_unit.empty() ? m.unit : m.value_unit,
                                  format_number(m.error),
-                                 m.unit};
+                                 relative ? "relative" : m.unit};
     if (with_checks) {
       row.push_back(limit);
       row.push_back(result);
+      row.push_back(why);
     }
     row.push_back(note);
     t.rows.push_back(std::move(row));

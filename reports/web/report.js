@@ -314,8 +314,30 @@
       return;
     }
     const table = el('table', { class: 'pb', id: 'tbl-' + t.id });
-    table.appendChild(el('thead', {}, el('tr', {}, ...t.columns.map((c) => el('th', {}, c)))));
     const body = el('tbody');
+    // click a header to sort by it (numbers as numbers), again to reverse
+    let sortedBy = -1;
+    let ascending = true;
+    const sortBy = (j) => {
+      ascending = sortedBy === j ? !ascending : true;
+      sortedBy = j;
+      const key = (r) => r.cells[j];
+      const sorted = [...rows].sort((a, b) => {
+        const x = key(a);
+        const y = key(b);
+        const nx = x === '' ? NaN : Number(x);
+        const ny = y === '' ? NaN : Number(y);
+        let c;
+        if (!Number.isNaN(nx) && !Number.isNaN(ny)) c = nx - ny;
+        else if (!Number.isNaN(nx) !== !Number.isNaN(ny)) c = Number.isNaN(nx) ? 1 : -1;
+        else c = x.localeCompare(y);
+        return ascending ? c : -c;
+      });
+      for (const r of sorted) body.appendChild(r.tr);
+      headers.forEach((h, k) => h.setAttribute('aria-sort', k === j ? (ascending ? 'ascending' : 'descending') : 'none'));
+    };
+    const headers = t.columns.map((c, j) => el('th', { class: 'sortable', title: 'sort by ' + c, onclick: () => sortBy(j) }, c));
+    table.appendChild(el('thead', {}, el('tr', {}, ...headers)));
     const rows = t.rows.map((r, i) => {
       const tr = el('tr', { class: t.row_status[i] || '' });
       r.forEach((cell, j) => {
@@ -325,7 +347,9 @@
         tr.appendChild(td);
       });
       body.appendChild(tr);
-      return { tr, text: r.join(' ').toLowerCase(), status: t.row_status[i] };
+      // the metrics beyond the gated checks and the truth comparisons start folded
+      const folded = t.id === 'metrics' && !t.row_status[i] && r[2] !== 'truth';
+      return { tr, cells: r, text: r.join(' ').toLowerCase(), status: t.row_status[i], folded };
     });
     table.appendChild(body);
 
@@ -335,11 +359,14 @@
       const hasFail = t.row_status.includes('fail');
       const onlyFail = el('input', { type: 'checkbox' });
       const count = el('span', { class: 'note' });
+      const anyFolded = rows.some((r) => r.folded);
+      const showAll = el('input', { type: 'checkbox' });
       const apply = () => {
         const words = input.value.toLowerCase().split(/\s+/).filter(Boolean);
         let shown = 0;
         for (const r of rows) {
-          const ok = words.every((w) => r.text.includes(w)) && (!onlyFail.checked || r.status === 'fail');
+          const ok = words.every((w) => r.text.includes(w)) && (!onlyFail.checked || r.status === 'fail') &&
+            (showAll.checked || !r.folded);
           r.tr.style.display = ok ? '' : 'none';
           shown += ok ? 1 : 0;
         }
@@ -347,8 +374,13 @@
       };
       input.addEventListener('input', apply);
       onlyFail.addEventListener('change', apply);
+      showAll.addEventListener('change', apply);
       const filter = el('div', { class: 'filter' }, 'Filter: ', input);
       if (hasFail) filter.appendChild(el('label', {}, ' ', onlyFail, ' failed only'));
+      if (anyFolded) {
+        filter.appendChild(el('label', {}, ' ', showAll, ' every metric (' +
+          rows.filter((r) => r.folded).length + ' more: against the reference, between engines, self)'));
+      }
       filter.appendChild(count);
       sec.appendChild(filter);
       apply();

@@ -88,7 +88,7 @@ TEST(CaseFigures, TrajectoryValuesAndEpisodeZoom) {
   // one episode, 31 ms long: the zoom pads half its length on each side
   // (1e-12 s: rounding of sums of O(1) s times)
   ASSERT_EQ(figures[0].episodes.size(), 1u);
-  EXPECT_EQ(figures[0].episodes[0].label, "episode 1");
+  EXPECT_EQ(figures[0].episodes[0].label, "episode 0");
   EXPECT_NEAR(figures[0].episodes[0].t0_s, 0.7250 - 0.0155, 1e-12);
   EXPECT_NEAR(figures[0].episodes[0].t1_s, 0.7560 + 0.0155, 1e-12);
 }

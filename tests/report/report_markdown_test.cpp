@@ -20,12 +20,12 @@ TEST(FigureViews, ForceFiguresGetAZoomOnTheFirstEpisode) {
   f.title = "Fig. 5 Contact force";
   f.quantity = Quantity::force;
   f.t_end_s = 2.5;
-  f.episodes = {{"episode 1", 0.70, 0.78}, {"episode 2", 1.9, 2.1}};
+  f.episodes = {{"episode 0", 0.70, 0.78}, {"episode 1", 1.9, 2.1}};
   const auto views = figure_views(f);
   ASSERT_EQ(views.size(), 2u);
   EXPECT_EQ(views[0].file, "figures/falling_ball_fig5.svg");
   EXPECT_DOUBLE_EQ(views[0].t1_s, 2.5);
-  EXPECT_EQ(views[1].file, "figures/falling_ball_fig5_episode1.svg");
+  EXPECT_EQ(views[1].file, "figures/falling_ball_fig5_episode0.svg");
   EXPECT_DOUBLE_EQ(views[1].t0_s, 0.70);
   f.quantity = Quantity::y;
   EXPECT_EQ(figure_views(f).size(), 1u);

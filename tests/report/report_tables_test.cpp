@@ -40,25 +40,58 @@ TEST(MetricsTable, PassFailFromTheOutcomesOfEachMetric) {
   const auto a = metric("mujoco", "peak_force", 0, 582.0, 581.2, 0.0014);
   const auto b = metric("box2d", "peak_force", 0, 1.145e5, 581.2, 196.0);
   const auto c = metric("ode", "peak_force", 0, 581.0, 581.2, 0.0003);
-  const Table t =
-      metrics_table({a, b, c}, {outcome(a, true, 29.06), outcome(b, false, 29.06)}, true);
+  auto oa = outcome(a, true, 29.06);
+  oa.threshold.why = "phase error 1.2 %";
+  const Table t = metrics_table({a, b, c}, {oa, outcome(b, false, 29.06)}, true);
   ASSERT_EQ(t.rows.size(), 3u);
-  ASSERT_EQ(t.columns.size(), 12u);
-  EXPECT_EQ(t.columns[9], "limit");
-  EXPECT_EQ(t.columns[10], "result");
-  EXPECT_EQ(t.rows[0][10], "pass");
-  EXPECT_EQ(t.rows[1][10], "fail");
-  EXPECT_EQ(t.rows[1][11], "too far");
-  EXPECT_EQ(t.rows[2][10], "");  // no threshold covers it
+  ASSERT_EQ(t.columns.size(), 14u);
+  EXPECT_EQ(t.columns[10], "limit");
+  EXPECT_EQ(t.columns[11], "result");
+  EXPECT_EQ(t.rows[0][11], "pass");
+  EXPECT_EQ(t.rows[0][12], "phase error 1.2 %");  // the threshold's why beside its limit
+  EXPECT_EQ(t.rows[1][11], "fail");
+  EXPECT_EQ(t.rows[1][13], "too far");
+  EXPECT_EQ(t.rows[2][11], "");  // no threshold covers it
   EXPECT_EQ(t.row_status, (std::vector<std::string>{"pass", "fail", ""}));
   EXPECT_EQ(t.rows[1][5], "1.145e+05");
   EXPECT_EQ(t.rows[0][4], "0");
 }
 
+TEST(MetricsTable, GatedFirstThenTruthThenTheRest) {
+  auto self = metric("ode", "energy_drift", -1, 0.1, 0.0, 0.1);
+  self.against = "self";
+  auto vs_ref = metric("ode", "position_max", -1, 0.2, 0.0, 0.2);
+  vs_ref.against = "reference";
+  const auto truth = metric("ode", "position_max", -1, 0.3, 0.0, 0.3);
+  const auto gated = metric("mujoco", "restitution", 0, 0.8, 0.8, 1e-3);
+  const Table t = metrics_table({self, vs_ref, truth, gated}, {outcome(gated, true, 1e-2)}, true);
+  ASSERT_EQ(t.rows.size(), 4u);
+  EXPECT_EQ(t.rows[0][1], "mujoco");    // the gated check
+  EXPECT_EQ(t.rows[1][2], "truth");     // then the truth comparison
+  EXPECT_EQ(t.rows[2][2], "self");      // then the rest, in the metrics' order
+  EXPECT_EQ(t.rows[3][2], "reference");
+}
+
+TEST(MetricsTable, UnitsOfTheValueAndOfTheError) {
+  auto a = metric("ode", "peak_force", 0, 582.0, 581.2, 0.0014);
+  a.unit = "1";  // a relative error ...
+  a.value_unit = "N";  // ... of a force
+  auto b = metric("ode", "restitution", 0, 0.80, 0.81, 0.01);
+  b.unit = "1";  // a dimensionless quantity, its error absolute
+  b.value_unit = "1";
+  const Table t = metrics_table({a, b}, {}, false);
+  EXPECT_EQ(t.columns[7], "unit");
+  EXPECT_EQ(t.columns[9], "error unit");
+  EXPECT_EQ(t.rows[0][7], "N");
+  EXPECT_EQ(t.rows[0][9], "relative");
+  EXPECT_EQ(t.rows[1][7], "1");
+  EXPECT_EQ(t.rows[1][9], "1");
+}
+
 TEST(MetricsTable, NoCheckColumnsWithoutThresholds) {
   const auto a = metric("mujoco", "position_max", -1, 1e-3, 0.0, 1e-3);
   const Table t = metrics_table({a}, {}, false);
-  EXPECT_EQ(t.columns.size(), 10u);
+  EXPECT_EQ(t.columns.size(), 11u);
   EXPECT_EQ(t.rows[0][4], "");  // not a per-episode metric
 }
 

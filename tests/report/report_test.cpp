@@ -70,7 +70,7 @@ TEST_F(ReportTest, WritesPageMarkdownAndFigures) {
   EXPECT_EQ(s.checks, 0u);
   for (const char* f :
        {"report.html", "report.md", "figures/falling_ball_fig5.svg",
-        "figures/falling_ball_fig5_episode1.svg", "figures/falling_ball_fig6.svg"}) {
+        "figures/falling_ball_fig5_episode0.svg", "figures/falling_ball_fig6.svg"}) {
     EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / f)) << f;
   }
   const std::string html = internal::read_text_file(dir_ / "out" / "report.html");

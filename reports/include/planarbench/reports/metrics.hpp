@@ -23,7 +23,8 @@ struct MetricValue {
   double actual = 0.0;
   double desired = 0.0;
   double error = 0.0;    // abs error, or relative error for relative metrics
-  std::string unit;      // of `error`
+  std::string unit;      // of `error` ("1": relative, or a dimensionless quantity)
+  std::string value_unit;  // of `actual` and `desired`
   std::string note;      // e.g. "episode missing in run", "compared up to t = 0.4965 s"
 };
 

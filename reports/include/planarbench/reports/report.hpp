@@ -29,9 +29,10 @@ struct ReportOptions {
   // node_modules/uplot; empty: $PLANARBENCH_WEB_DIR, else the source tree's
   // reports/web
   std::filesystem::path web_dir;
-  // per series, in the page: a chart is at most ~1900 px wide, so 2000
-  // evenly spaced samples draw a smooth stretch as the full series would
-  std::size_t max_points_outside_contact = 2000;
+  // per series, in the page: a chart is at most ~1450 px wide (the page's
+  // 1480 px column), so 1500 evenly spaced samples draw a smooth stretch as
+  // the full series would
+  std::size_t max_points_outside_contact = 1500;
   // per series inside contact windows: an impact's window is kept whole (the
   // shipped cases' impacts span at most ~700 output samples, padding included);
   // a sustained contact longer than this keeps each block's extremes
