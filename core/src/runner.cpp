@@ -20,6 +20,20 @@ bool finite_state(const BodyState& s) {
          std::isfinite(s.velocity_mps.y()) && std::isfinite(s.angular_velocity_radps);
 }
 
+// Contacts are sampled densely while young (issue 13): once a contact set
+// appears on the output grid, the next kDenseIntervals output intervals are
+// each sampled at kDenseSubsamples points too, as far as the engine's own
+// steps go (a fixed-step engine whose step is longer than the sub-interval is
+// sampled at every step). An impact's pulse shorter than a few output
+// intervals (dual_pendulum: 0.24 ms on a 0.1 ms grid) is then drawn and
+// measured through its peak; a pulse longer than kDenseIntervals has that
+// many grid samples already, and a sustained contact costs 20 intervals of
+// extra samples, not its whole length. Bodies stay on the output grid, and
+// no engine's steps depend on where it is sampled (whole steps, or dense
+// output; the reference's opt-in `paper` integrator stops at every target).
+constexpr int kDenseIntervals = 20;
+constexpr int kDenseSubsamples = 20;
+
 // angles are stored continuous: remove 2 pi jumps an engine's wrapping adds
 double unwrapped(double previous, double angle) {
   constexpr double two_pi = 2.0 * std::numbers::pi;
@@ -79,10 +93,38 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
   EnergyBudget energy(c);
   double energy_start_s = 0.0;  // s, time of the state start() was given
   int reported_percent = -1;
+  int dense_left = 0;         // output intervals still to sample densely
+  bool had_contacts = false;  // the previous grid sample had a contact
+  std::vector<ContactSample> sub_contacts;
+  auto record_contacts = [&](double t, const std::vector<ContactSample>& cs_list) {
+    for (const auto& cs : cs_list) {
+      if (spool) {
+        spool->append_contact(t, cs);
+      } else {
+        r.contacts.push_back(ContactRow{t, cs});
+      }
+    }
+  };
   try {
     engine.build(c, engine_overrides);
     r.settings = engine.settings().to_json();
     for (int k = 0; k < n; ++k) {
+      if (k > 0 && dense_left > 0) {
+        --dense_left;
+        const double t0 = c.output_time(k - 1);
+        const double t1 = c.output_time(k);
+        double t_last = engine.time();
+        for (int m = 1; m < kDenseSubsamples; ++m) {
+          engine.advance_to(t0 + (t1 - t0) * m / kDenseSubsamples);
+          const double te = engine.time();
+          // a new engine time strictly inside the interval (the grid sample
+          // at t1 follows)
+          if (!(te > t_last) || te >= t1 - 1e-9 * (t1 - t0)) continue;
+          t_last = te;
+          engine.contacts(sub_contacts);
+          record_contacts(te, sub_contacts);
+        }
+      }
       if (k > 0) engine.advance_to(c.output_time(k));
       const double t = engine.time();
       engine.body_states(states);
@@ -118,13 +160,9 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
         tr.velocity_mps.push_back(s.velocity_mps);
         tr.angular_velocity_radps.push_back(s.angular_velocity_radps);
       }
-      for (const auto& cs : contacts) {
-        if (spool) {
-          spool->append_contact(t, cs);
-        } else {
-          r.contacts.push_back(ContactRow{t, cs});
-        }
-      }
+      record_contacts(t, contacts);
+      if (!contacts.empty() && !had_contacts) dense_left = kDenseIntervals;
+      had_contacts = !contacts.empty();
       if (options.progress) {
         const int percent = static_cast<int>(100.0 * k / std::max(1, n - 1));
         if (percent != reported_percent) {

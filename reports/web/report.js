@@ -2,7 +2,7 @@
 // #pb-data) into figures (uPlot) and tables. Every text goes in through
 // textContent, never as HTML. When the charts are drawn it publishes
 // window.planarbenchReport = { charts: [{ id, title, paperFigure,
-//   series: [{ engine, points, tLast }], errorPanel: { against, series } | null }] }
+//   series: [{ engine, points, tLast, peak }], errorPanel: { against, series } | null }] }
 // for the browser test (tests/report/browser_test.mjs).
 (function () {
   'use strict';
@@ -271,10 +271,15 @@
       const ys = u.data[i + 1] || [];
       let points = 0;
       let tLast = null;
+      let peak = null;
       ys.forEach((v, k) => {
-        if (typeof v === 'number' && Number.isFinite(v)) { points++; tLast = xs[k]; }
+        if (typeof v === 'number' && Number.isFinite(v)) {
+          points++;
+          tLast = xs[k];
+          if (peak === null || v > peak) peak = v;
+        }
       });
-      entry.series.push({ engine: s.engine, points: points, tLast: tLast });
+      entry.series.push({ engine: s.engine, points: points, tLast: tLast, peak: peak });
     });
     charts.push(entry);
   }

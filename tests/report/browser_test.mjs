@@ -109,7 +109,8 @@ const py = spawnSync('/usr/bin/python3', ['-c', [
   '        err[e] = worst',
   '    ev = g["reference"]["events"]',
   '    onset = float(ev[0]["onset_time"]) if ev.shape[0] else None',
-  '    out[case] = {"status": st, "base": base, "error": err, "first_onset": onset}',
+  '    peaks = {e: max([float(x) for x in g[e]["events"]["peak_force"]] or [0.0]) for e in g if st[e] == "ok"}',
+  '    out[case] = {"status": st, "base": base, "error": err, "first_onset": onset, "peak_force": peaks}',
   'print(json.dumps(out))',
 ].join('\n'), results, ...CASES], { encoding: 'utf8' });
 if (py.status !== 0) fatal(`cannot read the runs with h5py (scripts/setup.sh installs python3-h5py): ${py.stderr}`);
@@ -185,6 +186,18 @@ try {
     const truth = chart.series.find((s) => s.engine === 'analytic');
     check(truth !== undefined && onset !== null && truth.tLast > onset + 0.1,
       `${chart.id}: the truth is drawn past the first impact (to t = ${truth ? truth.tLast : '-'} s; onset ${onset} s)`);
+  }
+
+  // the dual pendulum's 0.24 ms pulse is drawn through its peak: each
+  // compliant engine's plotted maximum within 1 % of its episodes' peak force
+  // (Box2D's rigid impact lasts one step between output samples: not drawn)
+  const pulse = report.charts.find((c) => c.id === 'dual_pendulum_force_ellipse_disk');
+  if (check(pulse !== undefined, 'dual_pendulum force figure is on the page')) {
+    for (const s of pulse.series.filter((x) => x.engine !== 'box2d')) {
+      const want = truthOf.dual_pendulum.peak_force[s.engine];
+      check(s.peak !== null && Math.abs(s.peak - want) <= 0.01 * want,
+        `dual_pendulum pulse: ${s.engine} plotted peak ${s.peak} N, its episodes' peak ${want.toPrecision(6)} N`);
+    }
   }
 
   const fig5 = report.charts.find((c) => c.id === 'falling_ball_fig5');
