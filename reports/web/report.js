@@ -69,6 +69,13 @@
     return s.engine === 'analytic' ? 'analytic (truth)' : s.engine;
   }
 
+  // time ticks with as many decimals as their spacing needs: a zoom into a
+  // 0.24 ms pulse reads 0.49650, 0.49655, ... not 0.496 four times
+  function timeTicks(u, splits, axisIdx, space, incr) {
+    const dec = Math.min(9, Math.max(0, Math.ceil(-Math.log10(incr) - 1e-9)));
+    return splits.map((v) => (v === null || v === undefined ? '' : v.toFixed(dec)));
+  }
+
   // the chart fills its column, down to a phone's width
   function chartWidth(container) {
     return Math.max(240, container.clientWidth || 900);
@@ -114,7 +121,7 @@
       },
       series: series,
       axes: [
-        { label: 'time, s' },
+        { label: 'time, s', values: timeTicks },
         { label: fig.y_label, size: 72 },
       ],
       cursor: { drag: { x: true, y: false } },
@@ -192,7 +199,7 @@
           width: s.engine === 'reference' ? 2.5 : 1.2,
           value: (uu, v) => (v === null || v === undefined ? '-' : Math.pow(10, v).toPrecision(3)),
         }))),
-      axes: [{ label: 'time, s' }, {
+      axes: [{ label: 'time, s', values: timeTicks }, {
         label: '|error|' + (unit ? ', ' + unit : ''),
         size: 72,
         incrs: [1, 2, 3, 5, 10, 20],
