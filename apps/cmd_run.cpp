@@ -15,6 +15,7 @@
 #include "planarbench/output_file.hpp"
 #include "planarbench/results_file.hpp"
 #include "planarbench/runner.hpp"
+#include "sweep_plan.hpp"
 #include "task_scheduler.hpp"
 
 namespace pb::cli {
@@ -27,6 +28,7 @@ struct RunOptionsCli {
   std::string out;
   std::vector<std::string> set;
   int jobs = 1;
+  int repeat = 1;
   bool quiet = false;
   std::string cases_dir;
 };
@@ -75,6 +77,9 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
   // every option is checked before a case is read or anything runs, the
   // output folder included (fail fast, write nothing)
   check_jobs(opt.jobs);
+  if (opt.repeat < 1 || opt.repeat > 100) {
+    throw InputError("--repeat", 0, "", fmt::format("must be in [1, 100] (got {})", opt.repeat));
+  }
   // the runs' samples stream to the results file's folder as they are made
   const std::filesystem::path out_target = output_target("--out", opt.out);
   check_engine_spec(opt.engine_spec);
@@ -152,7 +157,22 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
         ro.progress = [&](double f) { progress.fraction(i, what, f, last); };
         ro.spool_dir = out_target.parent_path().empty() ? std::filesystem::path(".")
                                                         : out_target.parent_path();
-        const RunResult r = run_engine(*engine, c, case_engine_settings[task.case_index], ro);
+        RunResult r = run_engine(*engine, c, case_engine_settings[task.case_index], ro);
+        // repeats of an ok run, for its cost only: the same bits each time
+        // (deterministic engines; their samples spool and are dropped), the
+        // median wall time is the run's, every one is kept
+        if (opt.repeat > 1 && r.status == RunStatus::ok) {
+          std::vector<double> walls{r.wall_time_s};
+          RunOptions again = ro;
+          again.progress = nullptr;
+          for (int k = 1; k < opt.repeat; ++k) {
+            auto fresh = make_engine(task.engine);
+            walls.push_back(
+                run_engine(*fresh, c, case_engine_settings[task.case_index], again).wall_time_s);
+          }
+          r.wall_time_repeats_s = walls;
+          r.wall_time_s = median(walls);
+        }
         progress.finished(i, what, r);
         statuses[i] = r.status;
         writer.write_run(task.case_index, i % engines.size(), r);
@@ -201,6 +221,10 @@ Action add_run_command(CLI::App& app, int argc, char** argv) {
                   "mujoco.solimp=\"0.9 0.95 0.001 0.5 2\"; see `planarbench list --settings`")
       ->take_all();
   cmd->add_option("--jobs,-j", opt->jobs, "Worker threads for the case x engine matrix")
+      ->default_val(1);
+  cmd->add_option("--repeat", opt->repeat,
+                  "Runs per case x engine, for its cost: the results are the first run's, the "
+                  "wall time the median of all (each is kept in wall_time_repeats_s)")
       ->default_val(1);
   cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
   cmd->add_option("--cases-dir", opt->cases_dir,

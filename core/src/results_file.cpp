@@ -194,6 +194,9 @@ void fill_run(hid_t group, const RunResult& r, internal::ChunkWriter* writer) {
   internal::write_string_attribute(g, "mapping", json_text(r.mapping));
   internal::write_string_attribute(g, "extra", json_text(r.extra));
   internal::write_double_attribute(g, "wall_time_s", r.wall_time_s);
+  if (!r.wall_time_repeats_s.empty()) {
+    internal::write_double_array_attribute(g, "wall_time_repeats_s", r.wall_time_repeats_s);
+  }
   internal::write_int64_attribute(g, "steps", static_cast<std::int64_t>(r.steps));
   internal::write_string_array_attribute(g, "body_names", r.body_names);
 
@@ -324,6 +327,10 @@ RunResult read_run(hid_t case_group, const std::string& case_name, const std::st
   r.mapping = parse_json_attribute<nlohmann::json>(g.get(), "mapping");
   r.extra = parse_json_attribute<nlohmann::json>(g.get(), "extra");
   r.wall_time_s = internal::read_double_attribute(g.get(), "wall_time_s");
+  // written only for a repeated run
+  if (H5Aexists(g.get(), "wall_time_repeats_s") > 0) {
+    r.wall_time_repeats_s = internal::read_double_array_attribute(g.get(), "wall_time_repeats_s");
+  }
   r.steps = static_cast<long>(internal::read_int64_attribute(g.get(), "steps"));
   r.body_names = internal::read_strings(g.get(), "body_names");
 

@@ -48,6 +48,17 @@ std::string format_number(double v) {
   return fmt::format("{:.4g}", v);
 }
 
+std::string wall_runs(const RunResult& r) {
+  return std::to_string(std::max<std::size_t>(1, r.wall_time_repeats_s.size()));
+}
+
+std::string wall_range(const RunResult& r) {
+  if (r.wall_time_repeats_s.size() < 2) return "";
+  const auto [lo, hi] =
+      std::minmax_element(r.wall_time_repeats_s.begin(), r.wall_time_repeats_s.end());
+  return format_number(*lo) + " - " + format_number(*hi);
+}
+
 Table capability_table(const ResultsFile& results) {
   Table t;
   t.id = "capability";
@@ -83,10 +94,11 @@ Table timings_table(const ResultsFile& results, const std::vector<Case>& cases) 
   t.id = "timings";
   t.title = "Timings";
   t.note =
-      "Wall-clock time of each run (model build and stepping) on the machine that ran it; "
-      "compare runs of one machine only.";
-  t.columns = {
-      "case", "engine", "status", "wall time, s", "steps", "simulated, s", "wall per simulated s"};
+      "Wall-clock time of each run (model build and stepping) on the machine that ran it (CPU "
+      "in the provenance); compare runs of one machine only. A run repeated (`run --repeat R`) "
+      "shows the median of its R wall times and their range.";
+  t.columns = {"case",  "engine",       "status",       "wall time, s", "runs",
+               "range, s", "steps", "simulated, s", "wall per simulated s"};
   for (std::size_t ci = 0; ci < results.cases.size(); ++ci) {
     const auto& cr = results.cases[ci];
     for (const auto* r : runs_in_report_order(cr)) {
@@ -96,8 +108,9 @@ Table timings_table(const ResultsFile& results, const std::vector<Case>& cases) 
       if (r->status == RunStatus::unsupported) simulated = 0.0;
       const double per_sim = simulated > 0.0 ? r->wall_time_s / simulated : std::nan("");
       t.rows.push_back({cr.case_name, r->engine_name, run_status_name(r->status),
-                        format_number(r->wall_time_s), std::to_string(r->steps),
-                        format_number(simulated), format_number(per_sim)});
+                        format_number(r->wall_time_s), wall_runs(*r), wall_range(*r),
+                        std::to_string(r->steps), format_number(simulated),
+                        format_number(per_sim)});
       t.row_status.push_back(r->status == RunStatus::diverged ? "fail" : "");
     }
   }

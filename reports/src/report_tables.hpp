@@ -42,4 +42,9 @@ namespace pb::internal {
 // numbers as the tables print them: 4 significant digits, "" for NaN
 [[nodiscard]] std::string format_number(double v);
 
+// how many wall times a run's cost is the median of (1 for a single run), and
+// their range "min - max" ("" for a single run)
+[[nodiscard]] std::string wall_runs(const RunResult& r);
+[[nodiscard]] std::string wall_range(const RunResult& r);
+
 }  // namespace pb::internal

@@ -19,7 +19,9 @@ struct Entry {
   std::string engine;
   RunStatus status = RunStatus::ok;
   double error_m = kNaN;      // position_max against the baseline
-  double cost = kNaN;         // wall s per simulated s
+  double cost = kNaN;         // wall s per simulated s (the median of the repeats)
+  double cost_lo = kNaN;      // the repeats' range, wall s per simulated s
+  double cost_hi = kNaN;
   std::string time_to_target;  // from the sweep, "" when not swept
 };
 
@@ -103,7 +105,8 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
   t.note = fmt::format(
       "Engines at their default settings, ranked by their largest position error (m) against "
       "the truth; x = times the best one's error; ms/s = wall milliseconds per simulated second "
-      "of this run (one run; the Timings table has every run){}. Caveats: runs not ok, known "
+      "(the median and [range] of the repeats of `run --repeat R`, else one run; the Timings "
+      "table has every run){}. Caveats: runs not ok, known "
       "breaches (bands an engine's own model cannot meet), failed checks, unresolved impacts.",
       work_precision.empty() ? ""
                              : "; 'to 1e-3 m' = the sweep's wall time, s, to reach that error");
@@ -114,6 +117,7 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
     const std::string against = c.truth == TruthKind::none ? "reference" : "truth";
     std::vector<Entry> entries;
     std::vector<std::string> caveats;
+    std::size_t runs = 1;  // wall times behind each cost
     for (const RunResult* r : runs_in_report_order(cr)) {
       if (r->engine_name == "analytic") continue;
       if (against == "reference" && r->engine_name == "reference") continue;
@@ -122,7 +126,16 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
       e.status = r->status;
       if (r->status == RunStatus::ok) {
         e.error_m = position_max(metrics, cr.case_name, r->engine_name, against);
-        if (c.duration_s > 0.0) e.cost = r->wall_time_s / c.duration_s;
+        if (c.duration_s > 0.0) {
+          e.cost = r->wall_time_s / c.duration_s;
+          if (r->wall_time_repeats_s.size() > 1) {
+            const auto [lo, hi] = std::minmax_element(r->wall_time_repeats_s.begin(),
+                                                      r->wall_time_repeats_s.end());
+            e.cost_lo = *lo / c.duration_s;
+            e.cost_hi = *hi / c.duration_s;
+          }
+        }
+        runs = std::max(runs, std::max<std::size_t>(1, r->wall_time_repeats_s.size()));
       } else {
         caveats.push_back(fmt::format("{} {}: {}", r->engine_name, run_status_name(r->status),
                                       r->reason));
@@ -152,6 +165,9 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
       }
       all += fmt::format("{} {} ({}, {} ms/s", e.engine, short_number(e.error_m),
                          ratio_text(e.error_m, best), fmt::format("{:.3g}", 1e3 * e.cost));
+      if (std::isfinite(e.cost_lo)) {
+        all += fmt::format(" [{:.3g}-{:.3g}]", 1e3 * e.cost_lo, 1e3 * e.cost_hi);
+      }
       if (!e.time_to_target.empty()) all += ", " + e.time_to_target;
       all += ")";
     }
@@ -174,6 +190,7 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
     }
     std::string caveat_text;
     for (const auto& k : caveats) caveat_text += (caveat_text.empty() ? "" : "; ") + k;
+    if (runs > 1) all += fmt::format("; costs: median [range] of {} runs", runs);
     t.rows.push_back({cr.case_name, truth_text(c.truth), best_text, all, caveat_text});
     t.row_status.push_back("");
   }

@@ -165,6 +165,37 @@ TEST(Cli, JobsDoNotChangeTheResults) {
   EXPECT_EQ(std::system(py.c_str()), 0);
 }
 
+// `run --repeat 3`: the results are a single run's (same datasets), the
+// cost is the median of three wall times, all three kept (checked with h5py
+// alone, not with planarbench's reader)
+TEST(Cli, RepeatKeepsTheResultsAndTheMedianCost) {
+  const auto a = work_dir() / "repeat1.h5";
+  const auto b = work_dir() / "repeat3.h5";
+  ASSERT_EQ(run("run --case falling_ball --engine analytic,reference --quiet --out " +
+                a.string()).exit_code, 0);
+  ASSERT_EQ(run("run --case falling_ball --engine analytic,reference --quiet --repeat 3 --out " +
+                b.string()).exit_code, 0);
+  const std::string same = std::string(PB_PYTHON) + " " + PB_SOURCE_DIR +
+                           "/tests/python/same_datasets.py " + a.string() + " " + b.string() +
+                           " 2>&1";
+  EXPECT_EQ(std::system(same.c_str()), 0);
+  const std::string py = std::string(PB_PYTHON) + " -c '" +
+                         "import h5py, statistics, sys\n"
+                         "f = h5py.File(sys.argv[1], \"r\")\n"
+                         "for e in (\"analytic\", \"reference\"):\n"
+                         "    g = f[\"runs/falling_ball/\" + e]\n"
+                         "    w = list(g.attrs[\"wall_time_repeats_s\"])\n"
+                         "    assert len(w) == 3, w\n"
+                         "    assert statistics.median(w) == g.attrs[\"wall_time_s\"], w\n"
+                         "' " + b.string() + " 2>&1";
+  EXPECT_EQ(std::system(py.c_str()), 0);
+  const Outcome bad = run("run --case falling_ball --engine analytic --repeat 0 --out " +
+                          (work_dir() / "repeat0.h5").string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_TRUE(contains(bad.output, "--repeat")) << bad.output;
+  EXPECT_FALSE(fs::exists(work_dir() / "repeat0.h5"));
+}
+
 // The CI gate: every case on every engine against the committed thresholds
 // (cases/thresholds.toml, each tolerance derived in its `why`). Fails when
 // any engine or the reference solver drifts out of tolerance.

@@ -120,12 +120,20 @@ TEST(CapabilityAndTimings, OneRowPerCaseAndPerRun) {
   EXPECT_EQ(cap.rows[0][1], "ok");
   EXPECT_EQ(cap.rows[0][2], "unsupported: cannot run this case");
 
-  const Table tim = timings_table(results, {c});
+  Table tim = timings_table(results, {c});
   ASSERT_EQ(tim.rows.size(), 4u);
   EXPECT_EQ(tim.rows[0][1], "analytic");
   // 0.5 s of wall time over 2.5 simulated seconds
-  EXPECT_EQ(tim.rows[0][6], "0.2");
-  EXPECT_EQ(tim.rows[1][5], "0");  // the unsupported reference simulated nothing
+  EXPECT_EQ(tim.rows[0][8], "0.2");
+  EXPECT_EQ(tim.rows[1][7], "0");  // the unsupported reference simulated nothing
+  EXPECT_EQ(tim.rows[0][4], "1");  // one run, no range
+  EXPECT_EQ(tim.rows[0][5], "");
+
+  // a repeated run: its median and the range of its wall times
+  results.cases[0].runs[2].wall_time_repeats_s = {0.6, 0.5, 0.9};  // analytic, first in the table
+  tim = timings_table(results, {c});
+  EXPECT_EQ(tim.rows[0][4], "3");
+  EXPECT_EQ(tim.rows[0][5], "0.5 - 0.9");
 }
 
 TEST(FormatNumber, FourDigitsAndBlankNaN) {

@@ -43,6 +43,9 @@ struct RunResult {
   nlohmann::json mapping = nlohmann::json::object();
   nlohmann::json extra = nlohmann::json::object();
   double wall_time_s = 0.0;           // s, wall clock for build + stepping
+  // s, every repeat's wall time when the run was repeated (`run --repeat R`,
+  // R > 1): wall_time_s is then their median; empty for a single run
+  std::vector<double> wall_time_repeats_s;
   long steps = 0;
   std::vector<std::string> body_names;     // index = Case::bodies index
   std::vector<BodyTrajectory> bodies;      // moving bodies only

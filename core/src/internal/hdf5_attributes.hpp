@@ -67,6 +67,14 @@ inline void write_int64_attribute(hid_t loc, const char* name, std::int64_t valu
   write_attribute(loc, name, H5T_STD_I64LE, H5T_NATIVE_INT64, space.get(), &value);
 }
 
+inline void write_double_array_attribute(hid_t loc, const char* name,
+                                         const std::vector<double>& values) {
+  const std::string object = object_path(loc) + "@" + name;
+  const hsize_t n = values.size();
+  Hid space = owned_space(H5Screate_simple(1, &n, nullptr), object, "cannot create a space");
+  write_attribute(loc, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, space.get(), values.data());
+}
+
 inline void write_int32_array_attribute(hid_t loc, const char* name,
                                         const std::vector<std::int32_t>& values) {
   const std::string object = object_path(loc) + "@" + name;
@@ -165,6 +173,19 @@ inline void read_numbers(hid_t loc, const char* name, hid_t mem_type, void* buf,
 inline double read_double_attribute(hid_t loc, const char* name) {
   double v = 0.0;
   read_numbers(loc, name, H5T_NATIVE_DOUBLE, &v, 1);
+  return v;
+}
+
+// a 1-D numeric attribute of any length, as doubles
+inline std::vector<double> read_double_array_attribute(hid_t loc, const char* name) {
+  const std::string object = object_path(loc) + "@" + name;
+  hsize_t n = 0;
+  {
+    Hid a = open_attribute(loc, name);
+    n = attribute_size(a.get(), object);
+  }
+  std::vector<double> v(n);
+  if (n > 0) read_numbers(loc, name, H5T_NATIVE_DOUBLE, v.data(), n);
   return v;
 }
 
