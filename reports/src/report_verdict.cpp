@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <string>
 
@@ -69,15 +70,17 @@ std::string time_to_target(const std::vector<WorkPrecisionCase>& wp, const std::
                                   [&](const std::string& c) { return c.rfind(prefix, 0) == 0; });
     if (col == w.summary.columns.end()) return "";
     const auto k = static_cast<std::size_t>(col - w.summary.columns.begin());
-    // "time to 1e-3 m, s" -> "to 1e-3 m"
-    std::string label = col->substr(prefix.size() - 3);
+    // "time to 1e-3 m, s" -> "1e-3 m"
+    std::string label = col->substr(prefix.size());
     if (const auto comma = label.rfind(", s"); comma != std::string::npos) label.resize(comma);
     for (const auto& row : w.summary.rows) {
-      if (!row.empty() && row[0] == series && k < row.size() && !row[k].empty()) {
-        // a time ("0.0032", "<= 0.0112") gets its unit; "not reached" stays
-        const bool time = row[k].find_first_of("0123456789") != std::string::npos;
-        return label + ": " + row[k] + (time ? " s" : "");
-      }
+      if (row.empty() || row[0] != series || k >= row.size() || row[k].empty()) continue;
+      // a time ("0.003205", "<= 0.01117") in two digits; "not reached": never
+      const std::string& cell = row[k];
+      const auto digit = cell.find_first_of("0123456789");
+      if (digit == std::string::npos) return label + ": " + (cell == "not reached" ? "never" : cell);
+      const double v = std::strtod(cell.c_str() + digit, nullptr);
+      return fmt::format("{} in {}{} s", label, digit > 0 ? "<=" : "", short_number(v));
     }
   }
   return "";
@@ -105,11 +108,11 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
   t.note = fmt::format(
       "Engines at their default settings, ranked by their largest position error (m) against "
       "the truth; x = times the best one's error; ms/s = wall milliseconds per simulated second "
-      "(the median and [range] of the repeats of `run --repeat R`, else one run; the Timings "
-      "table has every run){}. Caveats: runs not ok, known "
+      "(the median \u00b1 half the range of `run --repeat R`, relative; else one run; the "
+      "Timings table has every run){}. Caveats: runs not ok, known "
       "breaches (bands an engine's own model cannot meet), failed checks, unresolved impacts.",
       work_precision.empty() ? ""
-                             : "; 'to 1e-3 m' = the sweep's wall time, s, to reach that error");
+                             : "; '1e-3 m in' = the sweep's wall time to reach that error");
   t.columns = {"case", "truth", "best", "engines: error, m (x best, ms/s)", "caveats"};
   for (std::size_t ci = 0; ci < results.cases.size() && ci < cases.size(); ++ci) {
     const CaseRuns& cr = results.cases[ci];
@@ -117,7 +120,6 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
     const std::string against = c.truth == TruthKind::none ? "reference" : "truth";
     std::vector<Entry> entries;
     std::vector<std::string> caveats;
-    std::size_t runs = 1;  // wall times behind each cost
     for (const RunResult* r : runs_in_report_order(cr)) {
       if (r->engine_name == "analytic") continue;
       if (against == "reference" && r->engine_name == "reference") continue;
@@ -135,7 +137,6 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
             e.cost_hi = *hi / c.duration_s;
           }
         }
-        runs = std::max(runs, std::max<std::size_t>(1, r->wall_time_repeats_s.size()));
       } else {
         caveats.push_back(fmt::format("{} {}: {}", r->engine_name, run_status_name(r->status),
                                       r->reason));
@@ -165,8 +166,9 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
       }
       all += fmt::format("{} {} ({}, {} ms/s", e.engine, short_number(e.error_m),
                          ratio_text(e.error_m, best), fmt::format("{:.3g}", 1e3 * e.cost));
-      if (std::isfinite(e.cost_lo)) {
-        all += fmt::format(" [{:.3g}-{:.3g}]", 1e3 * e.cost_lo, 1e3 * e.cost_hi);
+      if (std::isfinite(e.cost_lo) && e.cost > 0.0) {
+        // the spread: half the repeats' range, relative to the median
+        all += fmt::format(" \u00b1{:.0f}%", 50.0 * (e.cost_hi - e.cost_lo) / e.cost);
       }
       if (!e.time_to_target.empty()) all += ", " + e.time_to_target;
       all += ")";
@@ -190,7 +192,6 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
     }
     std::string caveat_text;
     for (const auto& k : caveats) caveat_text += (caveat_text.empty() ? "" : "; ") + k;
-    if (runs > 1) all += fmt::format("; costs: median [range] of {} runs", runs);
     t.rows.push_back({cr.case_name, truth_text(c.truth), best_text, all, caveat_text});
     t.row_status.push_back("");
   }
