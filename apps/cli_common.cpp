@@ -244,6 +244,12 @@ void check_jobs(int jobs) {
   }
 }
 
+void check_repeat(int repeat) {
+  if (repeat < 1 || repeat > 100) {
+    throw InputError("--repeat", 0, "", fmt::format("must be in [1, 100] (got {})", repeat));
+  }
+}
+
 void check_output_file(const std::string& option, const fs::path& path) {
   (void)output_target(option, path);
 }

@@ -42,6 +42,8 @@ struct Overrides {
 
 // --jobs in [1, kMaxJobs]
 void check_jobs(int jobs);
+// --repeat in [1, 100] (run and sweep)
+void check_repeat(int repeat);
 
 // a file can be made at `path`: its folder exists, is a folder and accepts a
 // new file (tried by creating and removing a probe file, which catches what

@@ -77,9 +77,7 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
   // every option is checked before a case is read or anything runs, the
   // output folder included (fail fast, write nothing)
   check_jobs(opt.jobs);
-  if (opt.repeat < 1 || opt.repeat > 100) {
-    throw InputError("--repeat", 0, "", fmt::format("must be in [1, 100] (got {})", opt.repeat));
-  }
+  check_repeat(opt.repeat);
   // the runs' samples stream to the results file's folder as they are made
   const std::filesystem::path out_target = output_target("--out", opt.out);
   check_engine_spec(opt.engine_spec);

@@ -142,9 +142,7 @@ int run_sweep(const SweepOptionsCli& opt, int argc, char** argv) {
   if (opt.jobs < 1 || opt.jobs > 64) {
     throw InputError("--jobs", 0, "", fmt::format("must be in [1, 64] (got {})", opt.jobs));
   }
-  if (opt.repeat < 1 || opt.repeat > 100) {
-    throw InputError("--repeat", 0, "", fmt::format("must be in [1, 100] (got {})", opt.repeat));
-  }
+  check_repeat(opt.repeat);
   std::vector<double> dts =
       opt.dt_ladder.empty() ? default_dt_ladder() : parse_ladder(opt.dt_ladder, "--dt-ladder");
   std::vector<double> rtols = default_rtol_ladder();

@@ -77,6 +77,18 @@ struct CaseSection {
   std::vector<Figure> figures;
 };
 
+// How a series reaches an error level, its rungs taken coarse to fine.
+struct Reach {
+  enum class Kind {
+    interpolated,   // between two consecutive rungs that bracket the level
+    at_first_rung,  // the first rung with an error is already at or below it
+    not_reached,    // no rung is at or below it
+    no_data,        // no rung has an error
+  };
+  Kind kind = Kind::no_data;
+  double wall_time_s = 0.0;  // s; NaN for not_reached and no_data
+};
+
 // one series of a work-precision plot: an engine (or one integrator of the
 // reference) over its ladder, the rungs with a positive finite error only
 struct WorkPrecisionSeries {
@@ -87,6 +99,7 @@ struct WorkPrecisionSeries {
   std::vector<double> error_m;      // m
   std::vector<std::string> labels;  // each point's knob, e.g. "dt=1e-4"
   int default_index = -1;           // the point at the engine's default setting, -1 if none
+  std::vector<Reach> reach;         // how it reaches each of its case's targets_m
 };
 
 // the work-precision section of one case (`planarbench sweep`)

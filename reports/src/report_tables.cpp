@@ -52,11 +52,16 @@ std::string wall_runs(const RunResult& r) {
   return std::to_string(std::max<std::size_t>(1, r.wall_time_repeats_s.size()));
 }
 
-std::string wall_range(const RunResult& r) {
-  if (r.wall_time_repeats_s.size() < 2) return "";
+std::pair<double, double> wall_time_range(const RunResult& r) {
+  if (r.wall_time_repeats_s.size() < 2) return {std::nan(""), std::nan("")};
   const auto [lo, hi] =
       std::minmax_element(r.wall_time_repeats_s.begin(), r.wall_time_repeats_s.end());
-  return format_number(*lo) + " - " + format_number(*hi);
+  return {*lo, *hi};
+}
+
+std::string wall_range(const RunResult& r) {
+  const auto [lo, hi] = wall_time_range(r);
+  return std::isnan(lo) ? "" : format_number(lo) + " - " + format_number(hi);
 }
 
 Table capability_table(const ResultsFile& results) {

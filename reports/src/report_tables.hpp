@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "planarbench/case.hpp"
@@ -43,8 +44,9 @@ namespace pb::internal {
 [[nodiscard]] std::string format_number(double v);
 
 // how many wall times a run's cost is the median of (1 for a single run), and
-// their range "min - max" ("" for a single run)
+// their range: s (NaN, NaN for a single run), or as text "min - max" ("")
 [[nodiscard]] std::string wall_runs(const RunResult& r);
+[[nodiscard]] std::pair<double, double> wall_time_range(const RunResult& r);
 [[nodiscard]] std::string wall_range(const RunResult& r);
 
 }  // namespace pb::internal

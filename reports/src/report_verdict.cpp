@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <string>
 
 #include "report_figures.hpp"
 #include "report_tables.hpp"
+#include "report_work_precision_svg.hpp"
 
 namespace pb::internal {
 namespace {
@@ -58,29 +58,27 @@ double position_max(const std::vector<MetricValue>& metrics, const std::string& 
 }
 
 // the sweep's time to its first (largest) error target of an engine on a
-// case, as "to 1e-3 m: 0.0032 s" (the reference: its rk45 series, its default
+// case, as "1e-3 m in 0.0032 s" (the reference: its rk45 series, its default
 // integrator); "" when the sweep has no such series
 std::string time_to_target(const std::vector<WorkPrecisionCase>& wp, const std::string& case_name,
                            const std::string& engine) {
   const std::string series = engine == "reference" ? "reference_rk45" : engine;
-  const std::string prefix = "time to ";
   for (const auto& w : wp) {
-    if (w.name != case_name) continue;
-    const auto col = std::find_if(w.summary.columns.begin(), w.summary.columns.end(),
-                                  [&](const std::string& c) { return c.rfind(prefix, 0) == 0; });
-    if (col == w.summary.columns.end()) return "";
-    const auto k = static_cast<std::size_t>(col - w.summary.columns.begin());
-    // "time to 1e-3 m, s" -> "1e-3 m"
-    std::string label = col->substr(prefix.size());
-    if (const auto comma = label.rfind(", s"); comma != std::string::npos) label.resize(comma);
-    for (const auto& row : w.summary.rows) {
-      if (row.empty() || row[0] != series || k >= row.size() || row[k].empty()) continue;
-      // a time ("0.003205", "<= 0.01117") in two digits; "not reached": never
-      const std::string& cell = row[k];
-      const auto digit = cell.find_first_of("0123456789");
-      if (digit == std::string::npos) return label + ": " + (cell == "not reached" ? "never" : cell);
-      const double v = std::strtod(cell.c_str() + digit, nullptr);
-      return fmt::format("{} in {}{} s", label, digit > 0 ? "<=" : "", short_number(v));
+    if (w.name != case_name || w.targets_m.empty()) continue;
+    for (const auto& s : w.series) {
+      if (s.name != series || s.reach.empty()) continue;
+      const Reach& r = s.reach.front();
+      const std::string label = compact_number(w.targets_m.front()) + " m";
+      switch (r.kind) {
+        case Reach::Kind::interpolated:
+          return fmt::format("{} in {} s", label, short_number(r.wall_time_s));
+        case Reach::Kind::at_first_rung:
+          return fmt::format("{} in <={} s", label, short_number(r.wall_time_s));
+        case Reach::Kind::not_reached:
+          return label + ": never";
+        case Reach::Kind::no_data:
+          return label + ": no data";
+      }
     }
   }
   return "";
@@ -130,12 +128,9 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
         e.error_m = position_max(metrics, cr.case_name, r->engine_name, against);
         if (c.duration_s > 0.0) {
           e.cost = r->wall_time_s / c.duration_s;
-          if (r->wall_time_repeats_s.size() > 1) {
-            const auto [lo, hi] = std::minmax_element(r->wall_time_repeats_s.begin(),
-                                                      r->wall_time_repeats_s.end());
-            e.cost_lo = *lo / c.duration_s;
-            e.cost_hi = *hi / c.duration_s;
-          }
+          const auto [lo, hi] = wall_time_range(*r);  // NaN for a single run
+          e.cost_lo = lo / c.duration_s;
+          e.cost_hi = hi / c.duration_s;
         }
       } else {
         caveats.push_back(fmt::format("{} {}: {}", r->engine_name, run_status_name(r->status),

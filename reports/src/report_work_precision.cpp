@@ -169,7 +169,8 @@ WorkPrecisionCase work_precision_case(const SweepCase& c) {
   for (const double target : w.targets_m) {
     t.columns.push_back("time to " + target_text(target) + ", s");
   }
-  for (const auto& s : c.series) {
+  for (std::size_t k = 0; k < c.series.size(); ++k) {
+    const SweepSeries& s = c.series[k];
     std::vector<double> wall, error;
     for (const auto& r : s.rungs) {
       const bool ok = r.status == RunStatus::ok;
@@ -193,8 +194,10 @@ WorkPrecisionCase work_precision_case(const SweepCase& c) {
     }
     std::vector<std::string> row = {s.name,      s.knob, compact_number(s.default_value),
                                     err_default, cost,   ratio};
-    for (const double target : w.targets_m)
-      row.push_back(reach_text(time_to_reach(wall, error, target)));
+    for (const double target : w.targets_m) {
+      w.series[k].reach.push_back(time_to_reach(wall, error, target));
+      row.push_back(reach_text(w.series[k].reach.back()));
+    }
     t.rows.push_back(std::move(row));
     t.row_status.push_back("");
   }

@@ -17,18 +17,6 @@ namespace pb::internal {
 // m, the error levels each case's table gives the wall time for
 [[nodiscard]] const std::vector<double>& work_precision_targets();
 
-// How a series reaches an error level, its rungs taken coarse to fine.
-struct Reach {
-  enum class Kind {
-    interpolated,   // between two consecutive rungs that bracket the level
-    at_first_rung,  // the first rung with an error is already at or below it
-    not_reached,    // no rung is at or below it
-    no_data,        // no rung has an error
-  };
-  Kind kind = Kind::no_data;
-  double wall_time_s = 0.0;  // s; NaN for not_reached and no_data
-};
-
 // The wall time a series needs to reach `target_m`. Its rungs are walked in
 // ladder order (coarse to fine), skipping rungs without a finite error >= 0
 // and a positive finite wall time (diverged, unsupported, no truth). At the

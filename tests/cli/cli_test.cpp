@@ -37,6 +37,15 @@ fs::path work_dir() {
   return PB_WORK_DIR;
 }
 
+// exit status of tests/python/same_datasets.py A B (h5py alone): 0 when every
+// dataset of the two results files is the same
+int same_datasets(const fs::path& a, const fs::path& b) {
+  const std::string py = std::string(PB_PYTHON) + " " + PB_SOURCE_DIR +
+                         "/tests/python/same_datasets.py " + a.string() + " " + b.string() +
+                         " 2>&1";
+  return std::system(py.c_str());
+}
+
 bool contains(const std::string& haystack, const std::string& needle) {
   return haystack.find(needle) != std::string::npos;
 }
@@ -159,10 +168,7 @@ TEST(Cli, JobsDoNotChangeTheResults) {
                 a.string()).exit_code, 0);
   ASSERT_EQ(run("run --case falling_ball,sliding --engine analytic --quiet --jobs 2 --out " +
                 b.string()).exit_code, 0);
-  const std::string py = std::string(PB_PYTHON) + " " + PB_SOURCE_DIR +
-                         "/tests/python/same_datasets.py " + a.string() + " " + b.string() +
-                         " 2>&1";
-  EXPECT_EQ(std::system(py.c_str()), 0);
+  EXPECT_EQ(same_datasets(a, b), 0);
 }
 
 // `run --repeat 3`: the results are a single run's (same datasets), the
@@ -175,10 +181,7 @@ TEST(Cli, RepeatKeepsTheResultsAndTheMedianCost) {
                 a.string()).exit_code, 0);
   ASSERT_EQ(run("run --case falling_ball --engine analytic,reference --quiet --repeat 3 --out " +
                 b.string()).exit_code, 0);
-  const std::string same = std::string(PB_PYTHON) + " " + PB_SOURCE_DIR +
-                           "/tests/python/same_datasets.py " + a.string() + " " + b.string() +
-                           " 2>&1";
-  EXPECT_EQ(std::system(same.c_str()), 0);
+  EXPECT_EQ(same_datasets(a, b), 0);
   const std::string py = std::string(PB_PYTHON) + " -c '" +
                          "import h5py, statistics, sys\n"
                          "f = h5py.File(sys.argv[1], \"r\")\n"
