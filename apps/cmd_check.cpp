@@ -42,6 +42,12 @@ int run_check(const CheckOptions& opt) {
   check_not_an_input("--junit", junit, {opt.results, opt.thresholds});
   check_not_an_input("--summary", summary, {opt.results, opt.thresholds, junit});
   const ResultsFile results = read_results_file(opt.results);
+  if (results.cases.empty() && results.campaign) {
+    throw InputError(opt.results, 0, "/campaign",
+                     fmt::format("is the file of a {} (a table of runs, no /runs): `check` gates the "
+                                 "runs of `planarbench run`; `planarbench report` shows a {}",
+                                 results.campaign->kind, results.campaign->kind));
+  }
   check_threshold_names(opt.thresholds, thresholds, results);
 
   std::vector<MetricValue> metrics;

@@ -45,7 +45,10 @@ int run_report(const ReportOptionsCli& opt) {
                   s.checks - s.checks_failed - s.checks_known, s.checks, s.checks_failed,
                   s.checks_known);
     }
-    if (!opt.sweep.empty()) std::printf(", work-precision of %zu cases", s.work_precision_cases);
+    if (s.work_precision_cases > 0) {
+      std::printf(", work-precision of %zu cases", s.work_precision_cases);
+    }
+    if (s.campaign_cases > 0) std::printf(", campaign of %zu cases", s.campaign_cases);
     std::printf(")\n");
   }
   return 0;
@@ -60,7 +63,8 @@ Action add_report_command(CLI::App& app) {
       "Write an HTML + Markdown report of a results file: the paper's figures with every engine "
       "overlaid, metrics, parameter mapping, capability matrix, timings, provenance");
   cmd->add_option("results", opt->results,
-                  "Results file written by `planarbench run` (may be left out with --sweep)")
+                  "Results file written by `planarbench run` or `campaign merge` (a campaign's table "
+                  "gets its own section), or a sweep's file; may be left out with --sweep")
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", opt->out,
                   "Report folder (created): report.html, report.md, figures/*.svg")

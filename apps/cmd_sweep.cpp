@@ -22,6 +22,7 @@
 #include "planarbench/sweep_file.hpp"
 #include "sweep_error.hpp"
 #include "sweep_plan.hpp"
+#include "truth_run.hpp"
 #include "task_scheduler.hpp"
 
 namespace pb::cli {
@@ -75,43 +76,8 @@ class Progress {
   std::mutex mutex_;
 };
 
-// `base` with a settings list on top (the truth's own settings win)
-SettingsOverrides overrides_of(const std::vector<std::pair<std::string, std::string>>& settings,
-                               const SettingsOverrides& base) {
-  SettingsOverrides out = base;
-  for (const auto& [k, v] : settings) out.set(k, v, SettingSource{"sweep truth", 0});
-  return out;
-}
-
 std::string rung_label(const SeriesPlan& s, double value) {
   return fmt::format("{} {}={:g}", s.name, s.knob, value);
-}
-
-// runs fn(i) for every task i of `plan` on `jobs` threads, longest first;
-// Box2D runs are serialised (task_scheduler.hpp); the first exception wins
-template <typename Fn>
-void run_parallel(const std::vector<SchedulerTask>& plan, int jobs, Fn fn) {
-  TaskScheduler scheduler(plan);
-  std::mutex error_mutex;
-  std::exception_ptr first_error;
-  auto worker = [&] {
-    while (const auto next = scheduler.acquire()) {
-      try {
-        fn(*next);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(error_mutex);
-        if (!first_error) first_error = std::current_exception();
-        scheduler.cancel();
-      }
-      scheduler.release(*next);
-    }
-  };
-  const int n_threads = std::min<int>(jobs, static_cast<int>(plan.size()));
-  std::vector<std::thread> threads;
-  for (int t = 1; t < n_threads; ++t) threads.emplace_back(worker);
-  worker();
-  for (auto& t : threads) t.join();
-  if (first_error) std::rethrow_exception(first_error);
 }
 
 std::vector<fs::path> case_paths(const std::string& spec, const std::string& dir_option) {
@@ -188,43 +154,11 @@ int run_sweep(const SweepOptionsCli& opt, int argc, char** argv) {
     for (const auto& p : plans) plan.push_back(SchedulerTask{p.c.duration_s, ""});
     run_parallel(plan, opt.jobs, [&](std::size_t i) {
       const CasePlan& p = plans[i];
-      TruthPlan t = p.truth;
-      progress.print(i, fmt::format("{} truth: {} ...", p.c.name, t.label));
-      auto engine = make_engine(t.engine);
-      RunResult r = run_engine(*engine, p.c, overrides_of(t.settings, p.base));
-      // a closed form that does not run falls back to the reference
-      if (r.status != RunStatus::ok && t.engine == "analytic") {
-        t =
-            reference_truth(fmt::format("the closed form did not run ({}: {}); the reference "
-                                        "at exact geometry and tight tolerance instead",
-                                        run_status_name(r.status), r.reason));
-        engine = make_engine(t.engine);
-        r = run_engine(*engine, p.c, overrides_of(t.settings, p.base));
-      }
+      progress.print(i, fmt::format("{} truth: {} ...", p.c.name, p.truth.label));
+      TruthRun t = run_truth(p.c, p.truth, p.base);
       progress.print(i, fmt::format("{} truth: {} {} ({:.2f} s)", p.c.name, t.label,
-                                    run_status_name(r.status), r.wall_time_s));
-      // the reference truth checked against the closed form where it holds
-      if (t.engine == "reference" && p.c.truth == TruthKind::analytic_until_first_contact &&
-          r.status == RunStatus::ok) {
-        auto analytic = make_engine("analytic");
-        const RunResult a = run_engine(*analytic, p.c, p.base);
-        const double until = a.extra.value("valid_until_s", std::nan(""));
-        if (a.status == RunStatus::ok && std::isfinite(until)) {
-          for (const auto& m : compare_runs(p.c, r, a, "analytic", until)) {
-            if (m.metric == "position_max") {
-              t.note += fmt::format(
-                  "; up to the first contact (t = {:.6g} s) it is within "
-                  "{:.3g} m of the closed form",
-                  until, m.error);
-            }
-          }
-        }
-      }
-      if (r.status != RunStatus::ok) {
-        t.note += fmt::format("; the truth run is {} ({}): no errors", run_status_name(r.status),
-                              r.reason);
-      }
-      truths[i] = std::move(r);
+                                    run_status_name(t.result.status), t.result.wall_time_s));
+      truths[i] = std::move(t.result);
       truth_notes[i] = t.note;
       truth_labels[i] = t.label;
     });

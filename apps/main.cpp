@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   const auto check = pb::cli::add_check_command(app);
   const auto report = pb::cli::add_report_command(app);
   const auto sweep = pb::cli::add_sweep_command(app, argc, argv);
+  const auto campaign = pb::cli::add_campaign_command(app, argc, argv);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -45,6 +46,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("check")) return check();
     if (app.got_subcommand("report")) return report();
     if (app.got_subcommand("sweep")) return sweep();
+    if (app.got_subcommand("campaign")) return campaign();
   } catch (const pb::InputError& e) {
     std::fprintf(stderr, "planarbench: error: %s\n", e.what());
     return pb::kExitBadInput;

@@ -9,11 +9,14 @@
 // result: results are stored by task index.
 #pragma once
 
+#include <algorithm>
 #include <condition_variable>
 #include <cstddef>
+#include <exception>
 #include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace pb::cli {
@@ -53,5 +56,32 @@ class TaskScheduler {
 
 // The exclusive group of an engine ("" when its worlds are independent).
 [[nodiscard]] std::string exclusive_group(const std::string& engine);
+
+// runs fn(i) for every task i of `plan` on `jobs` threads, longest first;
+// Box2D runs are serialised (task_scheduler.hpp); the first exception wins
+template <typename Fn>
+void run_parallel(const std::vector<SchedulerTask>& plan, int jobs, Fn fn) {
+  TaskScheduler scheduler(plan);
+  std::mutex error_mutex;
+  std::exception_ptr first_error;
+  auto worker = [&] {
+    while (const auto next = scheduler.acquire()) {
+      try {
+        fn(*next);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(error_mutex);
+        if (!first_error) first_error = std::current_exception();
+        scheduler.cancel();
+      }
+      scheduler.release(*next);
+    }
+  };
+  const int n_threads = std::min<int>(jobs, static_cast<int>(plan.size()));
+  std::vector<std::thread> threads;
+  for (int t = 1; t < n_threads; ++t) threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads) t.join();
+  if (first_error) std::rethrow_exception(first_error);
+}
 
 }  // namespace pb::cli

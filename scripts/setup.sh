@@ -21,6 +21,7 @@ PACKAGES=(
   python3-h5py python3-numpy
   clang libclang-rt-14-dev     # scripts/fuzz.sh: Clang and libFuzzer's runtime
   lld                          # the asan-ubsan preset links with LLVM's lld (4x GNU ld's speed there)
+  slurm-wlm munge              # tests/slurm: campaigns on a local single-node Slurm
 )
 
 SUDO=""

@@ -8,6 +8,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -227,6 +229,123 @@ void write_case_header(hid_t runs, const CaseRuns& c) {
   for (const auto& r : c.runs) (void)create_group(g.get(), r.engine_name);
 }
 
+
+// ---- the campaign table (campaign_table.hpp) ----------------------------------
+
+nlohmann::ordered_json overrides_json(const std::vector<std::pair<std::string, std::string>>& o) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  for (const auto& [key, value] : o) j[key] = value;
+  return j;
+}
+
+// rows of a column, row-major [n, cols]; NaN where a run has fewer values
+std::vector<double> padded_rows(const std::vector<CampaignRun>& runs, std::size_t cols,
+                                const std::vector<double> CampaignRun::*member) {
+  std::vector<double> out(runs.size() * cols, std::nan(""));
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const auto& v = runs[i].*member;
+    std::copy_n(v.begin(), std::min(v.size(), cols), out.begin() + i * cols);
+  }
+  return out;
+}
+
+void write_campaign(hid_t file, const CampaignTable& t) {
+  Hid g = create_group(file, "campaign");
+  internal::write_string_attribute(g.get(), "kind", t.kind);
+  internal::write_string_attribute(g.get(), "source_text", t.source_text);
+  internal::write_string_attribute(g.get(), "source_sha256", internal::sha256_hex(t.source_text));
+  internal::write_string_attribute(g.get(), "source_path", t.source_path);
+  internal::write_string_attribute(g.get(), "description", json_text(t.description));
+  internal::write_int64_attribute(g.get(), "planned_runs", t.planned_runs);
+  internal::write_string_array_attribute(g.get(), "engines", t.engines);
+  internal::write_string_attribute(g.get(), "shard", t.shard);
+  internal::write_int64_attribute(g.get(), "trace_points", t.trace_points);
+  internal::write_int64_attribute(g.get(), "trace_bodies", t.trace_bodies);
+  {
+    Hid cases = create_group(g.get(), "cases");
+    for (const auto& c : t.cases) {
+      Hid cg = create_group(cases.get(), c.name);
+      internal::write_string_attribute(cg.get(), "case_text", c.text);
+      internal::write_string_attribute(cg.get(), "case_sha256", internal::sha256_hex(c.text));
+      internal::write_string_attribute(cg.get(), "case_path", c.path);
+      internal::write_string_attribute(cg.get(), "overrides", json_text(overrides_json(c.overrides)));
+      internal::write_double_attribute(cg.get(), "duration_s", c.duration_s);
+      internal::write_string_attribute(cg.get(), "truth", c.truth);
+      internal::write_string_attribute(cg.get(), "truth_note", c.truth_note);
+      internal::write_string_array_attribute(cg.get(), "moving_bodies", c.moving_bodies);
+      internal::write_string_attribute(cg.get(), "extra", json_text(c.extra));
+    }
+  }
+  {
+    Hid axes = create_group(g.get(), "axes");
+    for (const auto& a : t.axes) {
+      Hid ag = create_group(axes.get(), a.name);
+      internal::write_string_attribute(ag.get(), "key", a.key);
+      internal::write_string_attribute(ag.get(), "kind", a.kind);
+      internal::write_string_attribute(ag.get(), "unit", a.unit);
+      internal::write_string_attribute(ag.get(), "spec", json_text(a.spec));
+      internal::write_double_dataset(ag.get(), "values", a.values, 0, a.unit);
+    }
+  }
+  Hid runs = create_group(g.get(), "runs");
+  const std::size_t n = t.runs.size();
+  std::vector<std::int64_t> id(n), steps(n);
+  std::vector<std::string> case_name(n), engine(n), series(n), overrides(n), status(n), reason(n);
+  std::vector<double> wall(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const CampaignRun& r = t.runs[i];
+    id[i] = r.id;
+    steps[i] = r.steps;
+    case_name[i] = r.case_name;
+    engine[i] = r.engine;
+    series[i] = r.series;
+    overrides[i] = r.overrides;
+    status[i] = run_status_name(r.status);
+    reason[i] = r.reason;
+    wall[i] = r.wall_time_s;
+  }
+  // a measurement of this machine, not a result: an attribute (in the file's
+  // dense attribute storage, which the 1.8 format allows past 64 KiB)
+  internal::write_double_array_attribute(runs.get(), "wall_time_s", wall);
+  internal::write_string_attribute(runs.get(), "wall_time_unit", "s");
+  internal::write_int64_dataset(runs.get(), "id", id, "1");
+  internal::write_string_dataset(runs.get(), "case", case_name, "");
+  internal::write_string_dataset(runs.get(), "engine", engine, "");
+  internal::write_string_dataset(runs.get(), "series", series, "");
+  internal::write_string_dataset(runs.get(), "overrides", overrides, "");
+  internal::write_string_dataset(runs.get(), "status", status, "");
+  internal::write_string_dataset(runs.get(), "reason", reason, "");
+  internal::write_int64_dataset(runs.get(), "steps", steps, "1");
+  {
+    Hid axis = create_group(runs.get(), "axis");
+    for (std::size_t k = 0; k < t.axes.size(); ++k) {
+      std::vector<double> col(n);
+      for (std::size_t i = 0; i < n; ++i) col[i] = t.runs[i].axis_values.at(k);
+      internal::write_double_dataset(axis.get(), t.axes[k].name.c_str(), col, 0, t.axes[k].unit);
+    }
+  }
+  {
+    Hid metric = create_group(runs.get(), "metric");
+    for (std::size_t k = 0; k < t.metrics.size(); ++k) {
+      std::vector<double> col(n);
+      for (std::size_t i = 0; i < n; ++i) col[i] = t.runs[i].metrics.at(k);
+      const std::string name = t.metrics[k].name;
+      internal::write_double_dataset(metric.get(), name.c_str(), col, 0, t.metrics[k].unit);
+      Hid d = internal::open_dataset(metric.get(), name.c_str());
+      internal::write_string_attribute(d.get(), "doc", t.metrics[k].doc);
+    }
+  }
+  if (t.trace_points > 0) {
+    const auto tp = static_cast<std::size_t>(t.trace_points);
+    const auto cols = 2 * static_cast<std::size_t>(t.trace_bodies) * tp;
+    internal::write_double_dataset(runs.get(), "trace_time_s",
+                                   padded_rows(t.runs, tp, &CampaignRun::trace_time_s), tp, "s");
+    internal::write_double_dataset(runs.get(), "trace_position_m",
+                                   padded_rows(t.runs, cols, &CampaignRun::trace_position_m), cols,
+                                   "m");
+  }
+}
+
 // ---- reading ----------------------------------------------------------------
 
 Hid open_group(hid_t loc, const std::string& name, const std::string& missing_hint = "") {
@@ -274,13 +393,16 @@ Json parse_json_attribute(hid_t loc, const char* name) {
   }
 }
 
-RunStatus parse_status(hid_t run) {
-  const std::string s = internal::read_string_attribute(run, "status");
+RunStatus parse_status_name(const std::string& s, const std::string& object) {
   for (RunStatus st : {RunStatus::ok, RunStatus::diverged, RunStatus::unsupported}) {
     if (s == run_status_name(st)) return st;
   }
-  throw Hdf5Error(internal::object_path(run),
-                  fmt::format("status '{}' is not ok, diverged or unsupported", s));
+  throw Hdf5Error(object, fmt::format("status '{}' is not ok, diverged or unsupported", s));
+}
+
+RunStatus parse_status(hid_t run) {
+  return parse_status_name(internal::read_string_attribute(run, "status"),
+                           internal::object_path(run));
 }
 
 std::vector<Vec2> unflatten(const std::vector<double>& flat) {
@@ -404,6 +526,128 @@ CaseRuns read_case(hid_t runs, const std::string& name) {
   return c;
 }
 
+
+// the [n, cols] rows of a dataset back into each run's member
+void read_rows(hid_t loc, const char* name, std::size_t cols, std::vector<CampaignRun>& runs,
+               std::vector<double> CampaignRun::*member) {
+  const auto flat = internal::read_double_dataset(loc, name, cols);
+  if (flat.size() != runs.size() * cols) {
+    throw Hdf5Error(child_path(loc, name), "has not one row per run");
+  }
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    (runs[i].*member).assign(flat.begin() + i * cols, flat.begin() + (i + 1) * cols);
+  }
+}
+
+CampaignTable read_campaign(hid_t file) {
+  CampaignTable t;
+  Hid g = open_group(file, "campaign");
+  t.kind = internal::read_string_attribute(g.get(), "kind");
+  t.source_text = internal::read_string_attribute(g.get(), "source_text");
+  t.source_path = internal::read_string_attribute(g.get(), "source_path");
+  if (internal::read_string_attribute(g.get(), "source_sha256") !=
+      internal::sha256_hex(t.source_text)) {
+    throw Hdf5Error("/campaign", "source_sha256 does not match source_text");
+  }
+  t.description = parse_json_attribute<nlohmann::ordered_json>(g.get(), "description");
+  t.planned_runs = internal::read_int64_attribute(g.get(), "planned_runs");
+  t.engines = internal::read_strings(g.get(), "engines");
+  t.shard = internal::read_string_attribute(g.get(), "shard");
+  t.trace_points = static_cast<int>(internal::read_int64_attribute(g.get(), "trace_points"));
+  t.trace_bodies = static_cast<int>(internal::read_int64_attribute(g.get(), "trace_bodies"));
+  {
+    Hid cases = open_group(g.get(), "cases");
+    for (const auto& name : child_names(cases.get())) {
+      Hid cg = open_group(cases.get(), name);
+      CampaignCase c;
+      c.name = name;
+      c.text = internal::read_string_attribute(cg.get(), "case_text");
+      if (internal::read_string_attribute(cg.get(), "case_sha256") != internal::sha256_hex(c.text)) {
+        throw Hdf5Error(internal::object_path(cg.get()), "case_sha256 does not match case_text");
+      }
+      c.path = internal::read_string_attribute(cg.get(), "case_path");
+      const auto o = parse_json_attribute<nlohmann::ordered_json>(cg.get(), "overrides");
+      for (const auto& [key, value] : o.items()) {
+        c.overrides.emplace_back(key, value.is_string() ? value.get<std::string>() : value.dump());
+      }
+      c.duration_s = internal::read_double_attribute(cg.get(), "duration_s");
+      c.truth = internal::read_string_attribute(cg.get(), "truth");
+      c.truth_note = internal::read_string_attribute(cg.get(), "truth_note");
+      c.moving_bodies = internal::read_strings(cg.get(), "moving_bodies");
+      c.extra = parse_json_attribute<nlohmann::ordered_json>(cg.get(), "extra");
+      t.cases.push_back(std::move(c));
+    }
+  }
+  {
+    Hid axes = open_group(g.get(), "axes");
+    for (const auto& name : child_names(axes.get())) {
+      Hid ag = open_group(axes.get(), name);
+      CampaignAxis a;
+      a.name = name;
+      a.key = internal::read_string_attribute(ag.get(), "key");
+      a.kind = internal::read_string_attribute(ag.get(), "kind");
+      a.unit = internal::read_string_attribute(ag.get(), "unit");
+      a.spec = parse_json_attribute<nlohmann::ordered_json>(ag.get(), "spec");
+      a.values = internal::read_double_dataset(ag.get(), "values", 0);
+      t.axes.push_back(std::move(a));
+    }
+  }
+  Hid runs = open_group(g.get(), "runs");
+  const std::string object = internal::object_path(runs.get());
+  const auto id = internal::read_int64_dataset(runs.get(), "id");
+  const std::size_t n = id.size();
+  const auto steps = internal::read_int64_dataset(runs.get(), "steps");
+  const auto wall = internal::read_double_array_attribute(runs.get(), "wall_time_s");
+  std::vector<std::vector<std::string>> strings;
+  for (const char* col : {"case", "engine", "series", "overrides", "status", "reason"}) {
+    strings.push_back(internal::read_string_dataset(runs.get(), col));
+    if (strings.back().size() != n) throw Hdf5Error(object + "/" + col, "has not one row per run");
+  }
+  if (steps.size() != n || wall.size() != n) {
+    throw Hdf5Error(object, "steps or wall_time_s has not one value per run");
+  }
+  t.runs.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    CampaignRun& r = t.runs[i];
+    r.id = id[i];
+    r.steps = steps[i];
+    r.wall_time_s = wall[i];
+    r.case_name = strings[0][i];
+    r.engine = strings[1][i];
+    r.series = strings[2][i];
+    r.overrides = strings[3][i];
+    r.status = parse_status_name(strings[4][i], object + "/status");
+    r.reason = strings[5][i];
+  }
+  {
+    Hid axis = open_group(runs.get(), "axis");
+    for (const auto& a : t.axes) {
+      const auto col = internal::read_double_dataset(axis.get(), a.name.c_str(), 0);
+      if (col.size() != n) throw Hdf5Error(object + "/axis/" + a.name, "has not one row per run");
+      for (std::size_t i = 0; i < n; ++i) t.runs[i].axis_values.push_back(col[i]);
+    }
+  }
+  {
+    Hid metric = open_group(runs.get(), "metric");
+    for (const auto& name : child_names(metric.get())) {
+      Hid d = internal::open_dataset(metric.get(), name.c_str());
+      CampaignMetric m{name, internal::read_string_attribute(d.get(), "unit"),
+                       internal::read_string_attribute(d.get(), "doc")};
+      const auto col = internal::read_double_dataset(metric.get(), name.c_str(), 0);
+      if (col.size() != n) throw Hdf5Error(object + "/metric/" + name, "has not one row per run");
+      for (std::size_t i = 0; i < n; ++i) t.runs[i].metrics.push_back(col[i]);
+      t.metrics.push_back(std::move(m));
+    }
+  }
+  if (t.trace_points > 0) {
+    const auto tp = static_cast<std::size_t>(t.trace_points);
+    read_rows(runs.get(), "trace_time_s", tp, t.runs, &CampaignRun::trace_time_s);
+    read_rows(runs.get(), "trace_position_m", 2 * static_cast<std::size_t>(t.trace_bodies) * tp,
+              t.runs, &CampaignRun::trace_position_m);
+  }
+  return t;
+}
+
 ResultsFile read_file(hid_t file) {
   ResultsFile results;
   {
@@ -424,6 +668,11 @@ ResultsFile read_file(hid_t file) {
   Hid runs = open_group(file, "runs", " (not a planarbench results file)");
   for (const auto& name : child_names(runs.get())) {
     results.cases.push_back(read_case(runs.get(), name));
+  }
+  if (H5Lexists(file, "campaign", H5P_DEFAULT) > 0) {
+    results.campaign = read_campaign(file);
+  } else {
+    internal::hdf5_last_error();
   }
   return results;
 }
@@ -458,6 +707,7 @@ ResultsFileWriter::ResultsFileWriter(const fs::path& path, const ResultsFile& la
   State& st = *state_;
   st.threads = threads;
   st.layout.provenance = layout.provenance;
+  st.layout.campaign = layout.campaign;
   for (const auto& c : layout.cases) {
     CaseRuns header{c.case_name, c.case_text, c.case_path, c.overrides, {}};
     std::vector<std::string> groups;
@@ -483,8 +733,16 @@ void ResultsFileWriter::State::open() {
     Hid fcpl =
         internal::owned_plist(H5Pcreate(H5P_FILE_CREATE), object, "cannot create properties");
     internal::check(H5Pset_obj_track_times(fcpl.get(), 0), object, "cannot switch off times");
+    // a campaign's per-run wall times are one attribute, past the 64 KiB an
+    // attribute may have in the oldest format: the 1.8 format (h5py and
+    // every HDF5 since 2008 read it) for files with a campaign only
+    Hid fapl = internal::owned_plist(H5Pcreate(H5P_FILE_ACCESS), object, "cannot create properties");
+    if (layout.campaign) {
+      internal::check(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V18, H5F_LIBVER_LATEST), object,
+                      "cannot choose the 1.8 file format");
+    }
     file = internal::owned_file(
-        H5Fcreate(out.temporary().c_str(), H5F_ACC_TRUNC, fcpl.get(), H5P_DEFAULT), object,
+        H5Fcreate(out.temporary().c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get()), object,
         fmt::format("cannot create '{}'", out.temporary().string()));
     write_h5md(file.get());
     write_parameters(file.get(), layout.provenance);
@@ -535,6 +793,7 @@ void ResultsFileWriter::commit() {
   }
   st.open();
   try {
+    if (st.layout.campaign) write_campaign(st.file.get(), *st.layout.campaign);
     st.file.close("/");
   } catch (const Hdf5Error& e) {
     rethrow_as_write_error(st.path, e);

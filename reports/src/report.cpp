@@ -8,6 +8,7 @@
 #include "planarbench/reports/thresholds.hpp"
 #include "planarbench/results_file.hpp"
 #include "planarbench/sweep_file.hpp"
+#include "report_campaign.hpp"
 #include "report_figures.hpp"
 #include "report_files.hpp"
 #include "report_html.hpp"
@@ -93,6 +94,10 @@ ReportSummary write_report(const ReportOptions& options) {
   // without a results file the report is the work-precision section alone
   const bool with_results = !options.results.empty();
   const ResultsFile results = with_results ? read_results_file(options.results) : ResultsFile{};
+  // a sweep given as the results file is read as --sweep; a campaign's table
+  // is its own section
+  const bool sweep_as_results = results.campaign && results.campaign->kind == "sweep";
+  const bool has_runs = with_results && !results.cases.empty();
   const auto provenance =
       with_results ? internal::read_file_provenance(options.results) : internal::FileProvenance{};
   const auto thresholds =
@@ -107,6 +112,10 @@ ReportSummary write_report(const ReportOptions& options) {
     add_work_precision(report, options.sweep);
     // a sweep-only page shows the sweep's build, host and time in its header
     if (!with_results) report.provenance = sweep_parameters(options.sweep);
+  }
+  if (sweep_as_results && options.sweep.empty()) add_work_precision(report, options.results);
+  if (results.campaign && !sweep_as_results) {
+    report.campaign = internal::campaign_section(*results.campaign, options.results.string());
   }
   internal::FigureLimits limits;
   limits.max_outside = options.max_points_outside_contact;
@@ -150,7 +159,7 @@ ReportSummary write_report(const ReportOptions& options) {
                                  known));
   }
 
-  if (with_results) {
+  if (has_runs) {
     report.verdict = internal::verdict_table(results, cases, metrics, outcomes, report.mappings,
                                              report.work_precision);
     report.tables.push_back(internal::capability_table(results));
@@ -163,6 +172,7 @@ ReportSummary write_report(const ReportOptions& options) {
     report.tables.push_back(internal::unmatched_thresholds_table(outcomes));
   }
   if (with_results) report.tables.push_back(internal::provenance_table(provenance, results));
+  if (with_results && !has_runs) report.results_file.clear();
 
   // the files: figures first, the pages that reference them last
   internal::ensure_directory(options.out_dir);
@@ -183,6 +193,13 @@ ReportSummary write_report(const ReportOptions& options) {
                                     internal::work_precision_svg(w));
     ++summary.svg_files;
   }
+  for (const auto& c : report.campaign.cases) {
+    for (const auto& f : c.figures) {
+      internal::write_text_atomically(options.out_dir / ("figures/" + f.id + ".svg"), f.svg);
+      ++summary.svg_files;
+    }
+  }
+  summary.campaign_cases = report.campaign.cases.size();
   summary.work_precision_cases = report.work_precision.size();
   summary.markdown = options.out_dir / "report.md";
   internal::write_text_atomically(summary.markdown, internal::report_markdown(report));

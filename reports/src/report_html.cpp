@@ -173,6 +173,22 @@ nlohmann::json report_data_json(const Report& report) {
   data["work_precision"] = {{"note", report.work_precision_note},
                             {"cases", wp},
                             {"provenance", table_json(report.sweep_provenance)}};
+
+  // the campaign section: per case its figures (SVG text) and tables
+  nlohmann::json campaign_cases = nlohmann::json::array();
+  for (const auto& c : report.campaign.cases) {
+    nlohmann::json figures = nlohmann::json::array();
+    for (const auto& f : c.figures) {
+      figures.push_back({{"id", f.id}, {"title", f.title}, {"svg", f.svg}});
+    }
+    nlohmann::json case_tables = nlohmann::json::array();
+    for (const auto& t : c.tables) case_tables.push_back(table_json(t));
+    campaign_cases.push_back(
+        {{"name", c.name}, {"truth", c.truth}, {"figures", figures}, {"tables", case_tables}});
+  }
+  data["campaign"] = {{"file", report.campaign.file},
+                      {"note", report.campaign.note},
+                      {"cases", campaign_cases}};
   return data;
 }
 
@@ -216,7 +232,9 @@ std::string report_html(const Report& report, const WebAssets& assets) {
       assets.page_template,
       {{"TITLE",
         xml_escape("planarbench report: " +
-                   (report.results_file.empty() ? report.sweep_file : report.results_file))},
+                   (!report.results_file.empty() ? report.results_file
+                    : !report.campaign.file.empty() ? report.campaign.file
+                                                    : report.sweep_file))},
        {"UPLOT_VERSION", assets.uplot_version},
        {"UPLOT_LICENSE", script_safe(comment_safe(assets.uplot_license), "script")},
        {"UPLOT_CSS", script_safe(assets.uplot_css, "style")},

@@ -70,6 +70,20 @@ std::string work_precision_markdown(const Report& report) {
   return md;
 }
 
+std::string campaign_markdown(const Report& report) {
+  std::string md = "## Campaign\n\n" + report.campaign.note + "\n\n";
+  for (const auto& c : report.campaign.cases) {
+    md += "### " + c.name + "\n\nTruth of position_error_m: " + c.truth + ".\n\n";
+    for (const auto& f : c.figures) md += fmt::format("![{}](figures/{}.svg)\n\n", f.title, f.id);
+    for (const auto& t : c.tables) {
+      md += "#### " + t.title + "\n\n";
+      if (!t.note.empty()) md += t.note + "\n\n";
+      md += (t.rows.empty() ? std::string("(none)\n") : markdown_table(t)) + "\n";
+    }
+  }
+  return md;
+}
+
 std::vector<FigureView> figure_views(const Figure& f) {
   std::vector<FigureView> views;
   views.push_back(FigureView{"figures/" + f.id + ".svg", f.title, 0.0, f.t_end_s});
@@ -114,6 +128,9 @@ std::string report_markdown(const Report& report) {
   if (!report.sweep_file.empty()) {
     files += fmt::format("{}weep file: `{}`", files.empty() ? "S" : "; s", report.sweep_file);
   }
+  if (!report.campaign.file.empty()) {
+    files += fmt::format("{}ampaign file: `{}`", files.empty() ? "C" : "; c", report.campaign.file);
+  }
   md += files + ".\n\n";
   if (!report.check_summary.empty()) md += "**Check:** " + report.check_summary + "\n\n";
   md +=
@@ -127,6 +144,7 @@ std::string report_markdown(const Report& report) {
   md += "Contents:\n";
   for (const auto& c : report.cases) md += fmt::format("- [{}](#{})\n", c.name, anchor(c.name));
   if (!report.work_precision.empty()) md += "- [Work-precision](#work-precision)\n";
+  if (!report.campaign.cases.empty()) md += "- [Campaign](#campaign)\n";
   for (const auto& t : report.tables) md += fmt::format("- [{}](#{})\n", t.title, anchor(t.title));
   if (!report.results_file.empty()) md += "- [Parameter mapping](#parameter-mapping)\n";
   md += "\n";
@@ -160,6 +178,7 @@ std::string report_markdown(const Report& report) {
   }
 
   if (!report.work_precision.empty()) md += work_precision_markdown(report);
+  if (!report.campaign.cases.empty()) md += campaign_markdown(report);
   for (const auto& t : report.tables) section_table(md, t);
   // a sweep-only report has no runs to map
   if (report.results_file.empty()) return md;

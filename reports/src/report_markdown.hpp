@@ -29,6 +29,9 @@ struct FigureView {
 // every rung, then the sweep's provenance.
 [[nodiscard]] std::string work_precision_markdown(const Report& report);
 
+// The campaign section: per case its figures (figures/<id>.svg) and tables.
+[[nodiscard]] std::string campaign_markdown(const Report& report);
+
 // The whole report.md; figures are referenced by figure_views' file names.
 [[nodiscard]] std::string report_markdown(const Report& report);
 

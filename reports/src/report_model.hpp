@@ -115,6 +115,27 @@ struct WorkPrecisionCase {
   Table rungs;                           // every rung
 };
 
+// the campaign section (report_campaign.hpp): per case, its figures as SVG
+// text and its tables
+struct CampaignFigure {
+  std::string id;  // file-name safe, unique in the report
+  std::string title;
+  std::string svg;
+};
+
+struct CampaignCaseSection {
+  std::string name;
+  std::string truth;
+  std::vector<CampaignFigure> figures;
+  std::vector<Table> tables;
+};
+
+struct CampaignSection {
+  std::string file;
+  std::string note;
+  std::vector<CampaignCaseSection> cases;
+};
+
 struct Report {
   std::string results_file;                                     // as given on the command line
   std::string thresholds_file;                                  // "" when none
@@ -129,6 +150,7 @@ struct Report {
   std::string work_precision_note;  // how the sweep was made and read
   std::vector<WorkPrecisionCase> work_precision;
   Table sweep_provenance;  // /parameters of the sweep file
+  CampaignSection campaign;  // empty unless the results file holds a campaign
 };
 
 }  // namespace pb::internal

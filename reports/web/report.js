@@ -35,7 +35,7 @@
     // the inputs on one line
     const files = el('p', {});
     for (const [label, file] of [['Results file', data.results_file], ['sweep file', data.sweep_file],
-      ['thresholds', data.thresholds_file]]) {
+      ['campaign file', data.campaign && data.campaign.file], ['thresholds', data.thresholds_file]]) {
       if (!file) continue;
       if (files.childNodes.length) files.appendChild(document.createTextNode('; '));
       files.appendChild(document.createTextNode(label + ': '));
@@ -58,6 +58,7 @@
     if (data.verdict) nav.appendChild(el('a', { href: '#table-verdict' }, 'Verdict'));
     for (const c of data.cases) nav.appendChild(el('a', { href: '#case-' + slug(c.name) }, c.name));
     if (hasWorkPrecision()) nav.appendChild(el('a', { href: '#work-precision' }, 'Work-precision'));
+    if (hasCampaign()) nav.appendChild(el('a', { href: '#campaign' }, 'Campaign'));
     for (const t of data.tables) nav.appendChild(el('a', { href: '#table-' + slug(t.id) }, t.title));
     if (data.results_file) nav.appendChild(el('a', { href: '#mapping' }, 'Parameter mapping'));
   }
@@ -440,6 +441,28 @@
     main.appendChild(sec);
   }
 
+  // ---- campaign (planarbench campaign) --------------------------------------
+  function hasCampaign() {
+    return Boolean(data.campaign && data.campaign.cases.length);
+  }
+
+  function renderCampaign(main) {
+    if (!hasCampaign()) return;
+    const cp = data.campaign;
+    const sec = el('section', { id: 'campaign' });
+    sec.appendChild(el('h2', {}, 'Campaign'));
+    sec.appendChild(el('p', { class: 'note' }, cp.note));
+    for (const c of cp.cases) {
+      const box = el('div', { class: 'wp-case', id: 'campaign-' + slug(c.name) });
+      box.appendChild(el('h3', {}, c.name));
+      box.appendChild(el('p', { class: 'case-meta' }, 'Truth of position_error_m: ' + c.truth + '.'));
+      for (const f of c.figures) box.appendChild(el('div', { class: 'wp-plot' }, svgNode(f.svg)));
+      for (const t of c.tables) renderTable(t, box, 'h4');
+      sec.appendChild(box);
+    }
+    main.appendChild(sec);
+  }
+
   // ---- parameter mapping ---------------------------------------------------
   function jsonNode(v) {
     if (v === null || typeof v !== 'object') return document.createTextNode(String(v));
@@ -483,6 +506,7 @@
   if (data.verdict) renderTable(data.verdict, main);
   renderCases(main);
   renderWorkPrecision(main);
+  renderCampaign(main);
   for (const t of data.tables) renderTable(t, main);
   if (data.results_file) renderMappings(main);
 

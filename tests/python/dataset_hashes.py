@@ -8,8 +8,10 @@ the code under test.
 A run's hash covers, for each dataset under /runs/<case>/<engine>/ in sorted
 path order (bodies/<body>/{angle, angular_velocity, position, time, velocity},
 contacts, events): its path relative to the run, its element type, its shape
-and its values' bytes (decompressed, little-endian as stored). Attributes are
-not hashed: wall_time_s and /parameters (time, host, compiler) legitimately
+and its values' bytes (decompressed, little-endian as stored; a string column
+of a campaign: each string's UTF-8 bytes and its length). `datasets` and
+`same` also cover every dataset under /campaign (a campaign's or a sweep's
+table of runs). Attributes are not hashed: wall_time_s and /parameters (time, host, compiler) legitimately
 change from run to run, and everything computed is in the datasets.
 
 Usage (exit 0 ok, 1 mismatch or unreadable file, 2 bad usage):
@@ -45,9 +47,15 @@ def dataset_digest(relative_path, dataset):
     values = np.ascontiguousarray(dataset[()])
     h = hashlib.sha256()
     h.update(relative_path.encode("utf-8") + b"\0")
-    h.update(type_text(values.dtype).encode("ascii") + b"\0")
+    vlen = values.dtype.kind == "O"  # variable-length strings: the bytes, not the pointers
+    h.update((b"vlen-str" if vlen else type_text(values.dtype).encode("ascii")) + b"\0")
     h.update(repr(tuple(int(n) for n in values.shape)).encode("ascii") + b"\0")
-    h.update(values.tobytes())
+    if vlen:
+        for v in values.ravel():
+            b = v if isinstance(v, bytes) else str(v).encode("utf-8")
+            h.update(len(b).to_bytes(8, "little") + b)
+    else:
+        h.update(values.tobytes())
     return h
 
 
@@ -81,12 +89,15 @@ def run_hashes(path):
 
 
 def dataset_hashes(path):
-    """{dataset path: sha256 hex} of every dataset of every run."""
+    """{dataset path: sha256 hex} of every dataset of every run, and of /campaign."""
     out = {}
     with h5py.File(path, "r") as f:
         for _, _, run in run_groups(f):
             for name, d in run_datasets(run):
                 out[f"{run.name}/{name}"] = dataset_digest(name, d).hexdigest()
+        if "campaign" in f:
+            for name, d in run_datasets(f["campaign"]):
+                out[f"/campaign/{name}"] = dataset_digest(name, d).hexdigest()
     return out
 
 

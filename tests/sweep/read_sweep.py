@@ -3,10 +3,12 @@
 
 Usage: /usr/bin/python3 read_sweep.py SWEEP.h5
 
-Checks the layout on the way (the provenance attributes of /parameters, each
-case's attributes and digest, each series' attributes, a `unit` attribute on
-every dataset, equal lengths, known status words) and prints the file's
-numbers as one JSON object on stdout:
+The sweep is a results file whose /campaign table (kind "sweep") has a row per
+rung (core/include/planarbench/sweep_file.hpp). Checks the layout on the way
+(the provenance attributes of /parameters, each case's attributes and digest,
+its series, a `unit` attribute on every column, one row per rung in every
+column, known status words) and prints the file's numbers, regrouped by
+series, as one JSON object on stdout:
   {"parameters": {...}, "cases": {case: {"truth": ..., "series": {name:
    {"knob": ..., "value": [...], "position_error_m": [...], "status": [...], ...}}}}}
 NaN becomes null. Exits 1 on any violation (all are listed on stderr), 2 on
@@ -21,13 +23,14 @@ import h5py
 import numpy as np
 
 PARAMETERS = ["build_revision", "compiler", "compiler_flags", "build_type", "host",
-              "utc_time", "planarbench_version", "command_line", "file_kind"]
+              "utc_time", "planarbench_version", "command_line"]
 CASE_ATTRS = ["case_text", "case_sha256", "case_path", "overrides", "duration_s", "truth",
-              "truth_note"]
-SERIES_ATTRS = ["engine", "knob", "knob_key", "default_value", "fixed_settings", "truth"]
-DATASETS = {  # name: unit (None: depends on the knob)
-    "value": None, "wall_time_s": "s", "steps": "1", "position_error_m": "m",
-    "status": "", "reason": ""}
+              "truth_note", "extra"]
+SERIES_KEYS = ["name", "engine", "knob", "knob_key", "knob_unit", "default_value",
+               "fixed_settings"]
+COLUMNS = {  # name: unit
+    "id": "1", "case": "", "engine": "", "series": "", "overrides": "", "status": "",
+    "reason": "", "steps": "1", "axis/dt": "s", "axis/rtol": "1", "metric/position_error_m": "m"}
 STATUS = {"ok", "diverged", "unsupported"}
 
 errors = []
@@ -46,38 +49,44 @@ def number(v):
     return None if math.isnan(v) else v
 
 
-def read_series(g, where):
-    out = {}
-    for a in SERIES_ATTRS:
-        if a not in g.attrs:
-            fail(where, f"attribute {a} missing")
-    out["knob"] = text(g.attrs.get("knob", ""))
-    out["engine"] = text(g.attrs.get("engine", ""))
-    out["default_value"] = number(g.attrs.get("default_value", float("nan")))
-    json.loads(text(g.attrs.get("fixed_settings", "{}")))
-    lengths = set()
-    for name, unit in DATASETS.items():
-        if name not in g:
-            fail(where, f"dataset {name} missing")
+def read_columns(runs):
+    cols = {}
+    for name, unit in COLUMNS.items():
+        where = f"/campaign/runs/{name}"
+        if name not in runs:
+            fail(where, "dataset missing")
             continue
-        d = g[name]
-        if "unit" not in d.attrs:
-            fail(f"{where}/{name}", "no unit attribute")
-        want = unit if unit is not None else ("s" if out["knob"] == "dt" else "1")
-        if text(d.attrs.get("unit", "?")) != want:
-            fail(f"{where}/{name}", f"unit {text(d.attrs.get('unit', '?'))!r}, expected {want!r}")
+        d = runs[name]
+        if text(d.attrs.get("unit", "?")) != unit:
+            fail(where, f"unit {text(d.attrs.get('unit', '?'))!r}, expected {unit!r}")
         if d.ndim != 1:
-            fail(f"{where}/{name}", f"shape {d.shape}, expected [n]")
-        lengths.add(d.shape[0])
-        if d.dtype.kind == "O" or h5py.check_string_dtype(d.dtype) is not None:
-            out[name] = [text(x) for x in d.asstr()[()]]
+            fail(where, f"shape {d.shape}, expected [n]")
+        if h5py.check_string_dtype(d.dtype) is not None:
+            cols[name] = [text(x) for x in d.asstr()[()]]
         else:
-            out[name] = [number(x) for x in np.asarray(d[()], dtype=float)]
-    if len(lengths) > 1:
-        fail(where, f"datasets differ in length: {sorted(lengths)}")
-    for s in out.get("status", []):
+            cols[name] = [float(x) for x in np.asarray(d[()], dtype=float)]
+    cols["wall_time_s"] = [float(x) for x in runs.attrs.get("wall_time_s", [])]
+    if len({len(v) for v in cols.values()}) > 1:
+        fail("/campaign/runs", f"columns differ in length: {sorted({len(v) for v in cols.values()})}")
+    for s in cols.get("status", []):
         if s not in STATUS:
-            fail(f"{where}/status", f"unknown status {s!r}")
+            fail("/campaign/runs/status", f"unknown status {s!r}")
+    return cols
+
+
+def read_series(case, spec, cols):
+    out = {"knob": spec["knob"], "engine": spec["engine"],
+           "default_value": number(spec["default_value"])}
+    json.loads(spec["fixed_settings"])
+    rows = [i for i, (c, s) in enumerate(zip(cols["case"], cols["series"]))
+            if c == case and s == spec["name"]]
+    axis = "axis/dt" if spec["knob"] == "dt" else "axis/rtol"
+    out["value"] = [number(cols[axis][i]) for i in rows]
+    out["wall_time_s"] = [number(cols["wall_time_s"][i]) for i in rows]
+    out["steps"] = [number(cols["steps"][i]) for i in rows]
+    out["position_error_m"] = [number(cols["metric/position_error_m"][i]) for i in rows]
+    out["status"] = [cols["status"][i] for i in rows]
+    out["reason"] = [cols["reason"][i] for i in rows]
     return out
 
 
@@ -93,11 +102,17 @@ def main():
                 fail("/parameters", f"attribute {a} missing")
             else:
                 result["parameters"][a] = text(p.attrs[a])
-        result["parameters"]["repeat"] = int(p.attrs["repeat"])
-        result["parameters"]["dt_ladder"] = [float(x) for x in p.attrs["dt_ladder"]]
-        result["parameters"]["rtol_ladder"] = [float(x) for x in p.attrs["rtol_ladder"]]
-        for case, cg in f["sweep"].items():
-            where = f"/sweep/{case}"
+        g = f["campaign"]
+        if text(g.attrs.get("kind", "")) != "sweep":
+            fail("/campaign", "kind is not 'sweep'")
+        result["parameters"]["file_kind"] = text(g.attrs.get("kind", ""))
+        description = json.loads(text(g.attrs["description"]))
+        result["parameters"]["repeat"] = int(description["repeat"])
+        result["parameters"]["dt_ladder"] = [float(x) for x in description["dt_ladder"]]
+        result["parameters"]["rtol_ladder"] = [float(x) for x in description["rtol_ladder"]]
+        cols = read_columns(g["runs"])
+        for case, cg in g["cases"].items():
+            where = f"/campaign/cases/{case}"
             for a in CASE_ATTRS:
                 if a not in cg.attrs:
                     fail(where, f"attribute {a} missing")
@@ -106,8 +121,11 @@ def main():
                 fail(where, "case_sha256 does not match case_text")
             c = {"truth": text(cg.attrs["truth"]), "truth_note": text(cg.attrs["truth_note"]),
                  "duration_s": float(cg.attrs["duration_s"]), "series": {}}
-            for name, sg in cg.items():
-                c["series"][name] = read_series(sg, f"{where}/{name}")
+            for spec in json.loads(text(cg.attrs["extra"]))["series"]:
+                for k in SERIES_KEYS:
+                    if k not in spec:
+                        fail(f"{where}@extra", f"series without {k}")
+                c["series"][spec["name"]] = read_series(case, spec, cols)
             result["cases"][case] = c
     if errors:
         for e in errors:

@@ -3,9 +3,11 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "planarbench/campaign_table.hpp"
 #include "planarbench/engine.hpp"
 
 namespace pb {
@@ -75,6 +77,8 @@ struct ResultsProvenance {
 struct ResultsFile {
   ResultsProvenance provenance;
   std::vector<CaseRuns> cases;
+  // the runs of a campaign or a sweep, one row each (campaign_table.hpp)
+  std::optional<CampaignTable> campaign;
 };
 
 }  // namespace pb

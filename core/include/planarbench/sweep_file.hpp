@@ -1,23 +1,19 @@
-// The HDF5 work-precision file of `planarbench sweep`, readable with h5py
-// alone. Written to a temporary name in the target directory and renamed when
-// complete, like the results file (results_file.hpp).
+// The work-precision file of `planarbench sweep`: a results file (SPEC §5,
+// results_file.hpp) whose /campaign table (campaign_table.hpp, kind "sweep")
+// has one row per rung, written and read by the results file's own writer
+// and reader, readable with h5py alone:
 //
-//   /parameters                       attributes: provenance as in a results file
-//                                     (build, host, UTC time, command line), and
-//                                     the sweep's repeat, quick, dt_ladder, rtol_ladder,
-//                                     ladder_stop_rule (a series has fewer rungs than
-//                                     its ladder when it stopped early)
-//   /sweep/<case>/                    attributes: case_text, case_sha256, case_path,
-//                                     overrides (JSON), duration_s, truth, truth_note
-//   /sweep/<case>/<series>/           attributes: engine, knob ("dt" or "rtol"),
-//                                     knob_key (the --set key), default_value,
-//                                     fixed_settings (JSON), truth
-//     value [n]                       the knob's value at each rung (unit s or 1)
-//     wall_time_s [n]                 s, median wall time of the repeats
-//     steps [n]                       the engine's steps
-//     position_error_m [n]            m, max over samples and bodies of |p - p_truth|
-//     status [n], reason [n]          ok | diverged | unsupported, and why
-// Every dataset carries a `unit` attribute.
+//   /campaign@description          JSON: repeat, quick, dt_ladder, rtol_ladder,
+//                                  ladder_stop_rule (a series has fewer rungs than its
+//                                  ladder when it stopped early)
+//   /campaign/axes/dt, rtol        the ladders
+//   /campaign/cases/<case>         case_text, ..., truth, truth_note; extra (JSON):
+//                                  "series", each {name, engine, knob ("dt" | "rtol"),
+//                                  knob_key, knob_unit, default_value, fixed_settings}
+//   /campaign/runs/                a row per rung: case, engine, series, axis/dt or
+//                                  axis/rtol (NaN on the other), steps, status, reason,
+//                                  metric/position_error_m [m]; attribute wall_time_s [s]
+//                                  (median of the repeats)
 #pragma once
 
 #include <filesystem>

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -284,6 +285,78 @@ std::vector<Record> read_table(hid_t loc, const char* name, const TableLayout& l
     Hid mem_type = table_type(layout, false, object);
     check(H5Dread(d.get(), mem_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), object,
           "cannot read the table");
+  }
+  return out;
+}
+
+// ---- columns of strings and integers (the campaign table) ---------------------
+
+// the length of a one-dimensional dataset
+inline hsize_t dataset_length(hid_t d, const std::string& object) {
+  Hid space = owned_space(H5Dget_space(d), object, "cannot read the dataset's space");
+  hsize_t n = 0;
+  if (H5Sget_simple_extent_ndims(space.get()) != 1 ||
+      H5Sget_simple_extent_dims(space.get(), &n, nullptr) < 0) {
+    hdf5_last_error();
+    throw Hdf5Error(object, "expected shape [n]");
+  }
+  return n;
+}
+
+// [n] variable-length UTF-8 strings (h5py reads them as bytes; .asstr() gives str)
+inline void write_string_dataset(hid_t loc, const char* name,
+                                 const std::vector<std::string>& values, const std::string& unit) {
+  const std::string object = object_path(loc) + "/" + name;
+  Hid type = vlen_utf8_type(object);
+  std::vector<const char*> ptrs;
+  ptrs.reserve(values.size());
+  for (const auto& v : values) ptrs.push_back(v.c_str());
+  const hsize_t n = values.size();
+  Hid d = create_and_write(loc, name, type.get(), type.get(), 1, &n, ptrs.data(), nullptr);
+  write_string_attribute(d.get(), "unit", unit);
+  d.close(object);
+}
+
+inline void write_int64_dataset(hid_t loc, const char* name,
+                                const std::vector<std::int64_t>& values, const std::string& unit) {
+  const std::string object = object_path(loc) + "/" + name;
+  const hsize_t n = values.size();
+  Hid d = create_and_write(loc, name, H5T_STD_I64LE, H5T_NATIVE_INT64, 1, &n, values.data(),
+                           nullptr);
+  write_string_attribute(d.get(), "unit", unit);
+  d.close(object);
+}
+
+inline std::vector<std::string> read_string_dataset(hid_t loc, const char* name) {
+  Hid d = open_dataset(loc, name);
+  const std::string object = object_path(d.get());
+  Hid file_type = owned_type(H5Dget_type(d.get()), object, "cannot read the type");
+  if (H5Tget_class(file_type.get()) != H5T_STRING || H5Tis_variable_str(file_type.get()) <= 0) {
+    throw Hdf5Error(object, "is not a variable-length string dataset");
+  }
+  const hsize_t n = dataset_length(d.get(), object);
+  std::vector<char*> ptrs(n, nullptr);
+  std::vector<std::string> out;
+  if (n == 0) return out;
+  Hid mem = vlen_utf8_type(object);
+  check(H5Dread(d.get(), mem.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()), object,
+        "cannot read the dataset");
+  out.reserve(n);
+  // HDF5 allocated each string; we free them
+  for (char* p : ptrs) {
+    out.emplace_back(p != nullptr ? p : "");
+    if (p != nullptr) H5free_memory(p);
+  }
+  return out;
+}
+
+inline std::vector<std::int64_t> read_int64_dataset(hid_t loc, const char* name) {
+  Hid d = open_dataset(loc, name);
+  const std::string object = object_path(d.get());
+  std::vector<std::int64_t> out(dataset_length(d.get(), object));
+  if (!out.empty()) {
+    check(H5Dread(d.get(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), object,
+          "cannot read the dataset");
   }
   return out;
 }

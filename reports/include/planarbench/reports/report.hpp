@@ -53,6 +53,7 @@ struct ReportSummary {
   std::size_t checks_failed = 0;  // failing the gate
   std::size_t checks_known = 0;   // failing, declared before the run (known_breach)
   std::size_t work_precision_cases = 0;  // cases of the sweep file
+  std::size_t campaign_cases = 0;        // cases of the campaign table
 };
 
 // Writes the report. Throws InputError (exit 2) for a missing or foreign

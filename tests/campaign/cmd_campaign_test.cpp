@@ -1,0 +1,215 @@
+// Tests for apps/cmd_campaign.cpp, run as a user runs it: the real binary's
+// campaign plan / run / merge, its shards, a shard killed with SIGKILL and
+// resumed, merges that must fail, and the merged file read with h5py alone
+// (tests/campaign/read_campaign.py).
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "child_process.hpp"
+
+namespace {
+
+using namespace pb::test;
+
+// 2 cases x 3 engines x 2 steps x 3 perturbed initial velocities = 36 runs.
+// The analytic engine is one of them: its error against the truth of its own
+// (perturbed) initial state is zero, whatever the perturbation.
+const char* kCampaign = R"(
+[campaign]
+cases = ["falling_ball", "head_on"]
+engines = ["analytic", "mujoco", "ode"]
+metrics = ["position_error_m", "events", "first_restitution", "trace"]
+trace_points = 11
+
+[[axis]]
+key = "dt"
+values = [1e-4, 5e-5]
+
+[[axis]]
+name = "state"
+key = "bodies.*.velocity"
+perturb = { sigma = 1e-2, samples = 3, seed = 5 }
+)";
+constexpr int kRuns = 36;
+
+fs::path campaign_file(const fs::path& dir, const std::string& text = kCampaign) {
+  const fs::path p = dir / "study.toml";
+  std::ofstream(p) << text;
+  return p;
+}
+
+// planarbench campaign ARGS..., run to its end
+Finished campaign(std::vector<std::string> args) {
+  args.insert(args.begin(), "campaign");
+  return run_planarbench(args);
+}
+
+nlohmann::json read_with_h5py(const fs::path& file) {
+  const Finished f = run_shell(std::string(PB_PYTHON) + " " + PB_SOURCE_DIR +
+                               "/tests/campaign/read_campaign.py " + file.string());
+  EXPECT_EQ(f.exit.code, 0) << f.err;
+  return f.exit.code == 0 ? nlohmann::json::parse(f.err) : nlohmann::json::object();
+}
+
+// the one-machine run of kCampaign, made once per test process (CTest runs
+// the tests of this file in parallel processes: each has its own)
+const fs::path& one_shard_file() {
+  static const fs::path file = [] {
+    const fs::path dir = fresh_dir("one_" + std::to_string(::getpid()));
+    const fs::path toml = campaign_file(dir);
+    const Finished r = campaign({"run", toml.string(), "--out", (dir / "parts").string(), "-q"});
+    EXPECT_EQ(r.exit.code, 0) << r.err;
+    const Finished m = campaign({"merge", (dir / "parts").string(), "--out", (dir / "one.h5").string(), "-q"});
+    EXPECT_EQ(m.exit.code, 0) << m.err;
+    return dir / "one.h5";
+  }();
+  return file;
+}
+
+TEST(CmdCampaign, PlanCountsTheRunsAndEstimatesTheirCost) {
+  const fs::path dir = fresh_dir("plan");
+  const Finished f = run_shell(std::string(PB_EXE) + " campaign plan " + campaign_file(dir).string() +
+                               " --shards 4");
+  ASSERT_EQ(f.exit.code, 0) << f.err;
+  EXPECT_NE(f.err.find("36 runs = 2 case(s) x 3 engine(s) x 2 (dt) x 3 (state)"), std::string::npos) << f.err;
+  EXPECT_NE(f.err.find("truth runs: 6"), std::string::npos) << f.err;
+  // balanced by estimated cost, not by count: the costliest within one run of the mean
+  EXPECT_NE(f.err.find("4 shards: "), std::string::npos) << f.err;
+}
+
+TEST(CmdCampaign, ThreeShardsMergeToTheSameDatasetsAsOne) {
+  const fs::path dir = fresh_dir("three");
+  const fs::path toml = campaign_file(dir);
+  for (int k = 0; k < 3; ++k) {
+    // small checkpoints: each shard writes several files; one thread or two
+    const Finished r = campaign({"run", toml.string(), "--shard", std::to_string(k) + "/3",
+                                          "--out", (dir / "parts").string(), "--checkpoint-runs", "2",
+                                          "--jobs", k == 1 ? "1" : "2", "-q"});
+    ASSERT_EQ(r.exit.code, 0) << r.err;
+  }
+  EXPECT_GT(dir_entries(dir / "parts").size(), 6u);
+  const Finished m = campaign({"merge", (dir / "parts").string(), "--out", (dir / "three.h5").string()});
+  ASSERT_EQ(m.exit.code, 0) << m.err;
+  const Finished same = dataset_hashes("same " + one_shard_file().string() + " " + (dir / "three.h5").string());
+  EXPECT_EQ(same.exit.code, 0) << same.err;
+}
+
+TEST(CmdCampaign, MergedFileReadsWithH5pyAndHoldsEveryRunInOrder) {
+  const auto j = read_with_h5py(one_shard_file());
+  ASSERT_TRUE(j.contains("runs")) << j.dump();
+  EXPECT_EQ(j["runs"], kRuns);
+  EXPECT_EQ(j["planned_runs"], kRuns);
+  EXPECT_EQ(j["axes"], nlohmann::json::array({"dt", "state"}));
+  // the head-on closed form needs velocities along the line of centres: the
+  // perturbed ones are not, so the analytic engine is unsupported there (its
+  // 6 runs), and the truth of head_on is the reference
+  EXPECT_EQ(j["status"]["ok"], kRuns - 6);
+  EXPECT_EQ(j["status"]["unsupported"], 6);
+  // the analytic engine against the truth of its own initial state: exactly 0
+  // (a truth taken at the nominal state would be off by ~ 1e-2 m/s x 2.5 s)
+  ASSERT_EQ(j["analytic_position_error_m"].size(), 6u);
+  for (const auto& e : j["analytic_position_error_m"]) EXPECT_EQ(e.get<double>(), 0.0);
+  // the engines are close to it: a falling ball to ~1e-2 m at these steps
+  // (the sweep's errors, README), a head-on pair far closer
+  for (const auto& e : j["engine_position_error_m"]) EXPECT_LT(e.get<double>(), 0.05);
+  // each run starts where its overrides put it: the trace at t = 0 is the
+  // case's initial position (velocity was perturbed, position not)
+  EXPECT_EQ(j["trace_starts_at_initial_position"], true);
+}
+
+TEST(CmdCampaign, TheReportOfACampaignHasItsSection) {
+  const fs::path dir = fresh_dir("report");
+  const Finished r = run_planarbench({"report", one_shard_file().string(), "--out", (dir / "r").string()});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  const std::string md = file_bytes(dir / "r" / "report.md");
+  EXPECT_NE(md.find("## Campaign"), std::string::npos);
+  EXPECT_NE(md.find("36 of 36 planned runs"), std::string::npos);
+  // per case: error and wall time against dt, and the spread at each dt
+  for (const char* f : {"falling_ball_dt_position_error_m.svg", "falling_ball_dt_wall_time.svg",
+                        "falling_ball_state_spread_0.svg", "head_on_state_spread_1.svg"}) {
+    EXPECT_TRUE(fs::exists(dir / "r" / "figures" / f)) << f;
+    EXPECT_NE(md.find(std::string("figures/") + f), std::string::npos) << f;
+  }
+  // nothing of a run matrix: no verdict, no mapping
+  EXPECT_EQ(md.find("## Parameter mapping"), std::string::npos);
+}
+
+TEST(CmdCampaign, MergeWithAMissingShardExitsTwoNamingTheRuns) {
+  const fs::path dir = fresh_dir("missing");
+  const fs::path toml = campaign_file(dir);
+  const Finished r = campaign({"run", toml.string(), "--shard", "1/3", "--out", (dir / "parts").string(), "-q"});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  const Finished m = campaign({"merge", (dir / "parts").string(), "--out", (dir / "m.h5").string()});
+  EXPECT_EQ(m.exit.code, 2) << m.err;
+  EXPECT_NE(m.err.find("24 of 36 runs are missing"), std::string::npos) << m.err;
+  EXPECT_NE(m.err.find("shard(s) 0,2 of 3"), std::string::npos) << m.err;
+  EXPECT_NE(m.err.find("sbatch --array=0,2"), std::string::npos) << m.err;
+  // the first 20 named, with case, engine and axis points
+  EXPECT_NE(m.err.find("x analytic, dt=0.0001, state="), std::string::npos) << m.err;
+  EXPECT_NE(m.err.find("... and 4 more"), std::string::npos) << m.err;
+  EXPECT_FALSE(fs::exists(dir / "m.h5"));
+}
+
+TEST(CmdCampaign, ARunInTwoFilesIsRefused) {
+  const fs::path dir = fresh_dir("duplicate");
+  const fs::path toml = campaign_file(dir);
+  const Finished r = campaign({"run", toml.string(), "--out", (dir / "parts").string(), "-q"});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  const auto parts = dir_entries(dir / "parts");
+  ASSERT_EQ(parts.size(), 1u);
+  fs::copy_file(dir / "parts" / parts[0], dir / "parts" / ("copy-" + parts[0]));
+  const Finished m = campaign({"merge", (dir / "parts").string(), "--out", (dir / "m.h5").string()});
+  EXPECT_EQ(m.exit.code, 2) << m.err;
+  EXPECT_NE(m.err.find("36 run(s) are in two files"), std::string::npos) << m.err;
+  EXPECT_FALSE(fs::exists(dir / "m.h5"));
+}
+
+TEST(CmdCampaign, AFolderOfAnotherCampaignIsRefused) {
+  const fs::path dir = fresh_dir("other");
+  const fs::path toml = campaign_file(dir);
+  ASSERT_EQ(campaign({"run", toml.string(), "--shard", "0/9", "--out", (dir / "parts").string(), "-q"}).exit.code, 0);
+  std::string other = kCampaign;
+  other.replace(other.find("seed = 5"), 8, "seed = 6");
+  const fs::path toml2 = dir / "other.toml";
+  std::ofstream(toml2) << other;
+  const Finished r = campaign({"run", toml2.string(), "--out", (dir / "parts").string(), "-q"});
+  EXPECT_EQ(r.exit.code, 2) << r.err;
+  EXPECT_NE(r.err.find("belongs to another campaign"), std::string::npos) << r.err;
+}
+
+TEST(CmdCampaign, AShardKilledMidRunResumesWithNoDuplicateAndNoLostRun) {
+  const fs::path dir = fresh_dir("killed");
+  const fs::path toml = campaign_file(dir);
+  const fs::path parts = dir / "parts";
+  // one run per file, one thread: the kill lands between two checkpoints
+  const pid_t pid = spawn_planarbench(words("campaign run " + toml.string() + " --out " + parts.string() +
+                                            " --checkpoint-runs 1 --jobs 1 -q"));
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < deadline &&
+         (!fs::exists(parts) || dir_entries(parts).size() < 3)) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ::kill(pid, SIGKILL);
+  const ChildExit e = wait_child(pid);
+  ASSERT_TRUE(e.signaled) << "the shard ended before it was killed (exit " << e.code << ")";
+  const std::size_t kept = dir_entries(parts).size();  // finished runs, and maybe a temporary
+  ASSERT_LT(kept, static_cast<std::size_t>(kRuns));
+  // merging now names what is missing
+  const Finished early = campaign({"merge", parts.string(), "--out", (dir / "m.h5").string()});
+  EXPECT_EQ(early.exit.code, 2) << early.err;
+  // resubmitted: only what is missing runs
+  const Finished again = campaign({"run", toml.string(), "--out", parts.string()});
+  ASSERT_EQ(again.exit.code, 0) << again.err;
+  EXPECT_NE(again.err.find("already in"), std::string::npos) << again.err;
+  const Finished m = campaign({"merge", parts.string(), "--out", (dir / "m.h5").string()});
+  ASSERT_EQ(m.exit.code, 0) << m.err;
+  const Finished same = dataset_hashes("same " + one_shard_file().string() + " " + (dir / "m.h5").string());
+  EXPECT_EQ(same.exit.code, 0) << same.err;
+}
+
+}  // namespace
