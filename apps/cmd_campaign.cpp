@@ -124,6 +124,17 @@ std::vector<fs::path> part_files(const fs::path& dir) {
   return out;
 }
 
+// the name of the first case whose text differs between two headers of one
+// campaign ("" when they agree): a case file edited between two shards' runs
+std::string changed_case(const CampaignTable& a, const CampaignTable& b) {
+  for (const auto& ca : a.cases) {
+    for (const auto& cb : b.cases) {
+      if (ca.name == cb.name && ca.text != cb.text) return ca.name;
+    }
+  }
+  return "";
+}
+
 // first sample at or after t of a body, within its samples
 std::size_t sample_at(const BodyTrajectory& b, double t) {
   const auto it = std::lower_bound(b.time_s.begin(), b.time_s.end(), t - 1e-12);
@@ -232,6 +243,14 @@ int run_campaign(const CampaignOptionsCli& opt, int argc, char** argv) {
                        fmt::format("belongs to another campaign (its file differs from {}); give "
                                    "each campaign its own folder",
                                    opt.file));
+    }
+    const std::string edited = changed_case(*f.campaign, campaign_header(plan));
+    if (!edited.empty()) {
+      throw InputError(p.string(), 0, "/campaign/cases/" + edited,
+                       fmt::format("case '{}' was run from another text than its file has now: the "
+                                   "folder's runs and new ones would not be one campaign; restore "
+                                   "the case file or start a new folder",
+                                   edited));
     }
     for (const auto& r : f.campaign->runs) done.insert(r.id);
     const std::string name = p.filename().string();
@@ -434,6 +453,11 @@ int merge_campaign(const CampaignOptionsCli& opt, int argc, char** argv) {
     } else if (t.source_text != merged->source_text) {
       throw InputError(p.string(), 0, "/campaign@source_text",
                        fmt::format("belongs to another campaign than {}", parts.front().string()));
+    } else if (const std::string edited = changed_case(t, *merged); !edited.empty()) {
+      throw InputError(p.string(), 0, "/campaign/cases/" + edited,
+                       fmt::format("case '{}' has another text than in {}: its file was edited "
+                                   "between two shards' runs",
+                                   edited, parts.front().string()));
     }
     for (auto& r : t.runs) {
       const auto [it, fresh] = where.emplace(r.id, p.filename().string());
@@ -527,7 +551,8 @@ Action add_campaign_command(CLI::App& app, int argc, char** argv) {
   auto* run = cmd->add_subcommand(
       "run",
       "Run shard K of N of the campaign into a folder: one file per checkpoint, written "
-      "atomically; runs already in the folder are skipped (a resubmitted shard resumes)");
+      "atomically; runs already in the folder are skipped (a resubmitted shard resumes); exit 0 "
+      "even when runs diverge (that is data, recorded per run)");
   run->add_option("FILE", opt->file, "Campaign file (TOML)")->required();
   run->add_option("--out", opt->out, "The campaign's folder (made if missing)")->required();
   run->add_option("--shard", opt->shard,

@@ -182,6 +182,20 @@ TEST(CmdCampaign, AFolderOfAnotherCampaignIsRefused) {
   EXPECT_NE(r.err.find("belongs to another campaign"), std::string::npos) << r.err;
 }
 
+TEST(CmdCampaign, ACaseFileEditedBetweenShardsIsRefused) {
+  const fs::path dir = fresh_dir("edited");
+  fs::copy_file(fs::path(PB_SOURCE_DIR) / "cases/head_on.toml", dir / "head_on.toml");
+  std::string text = kCampaign;
+  text.replace(text.find("\"head_on\""), 9, "\"head_on.toml\"");
+  const fs::path toml = campaign_file(dir, text);
+  ASSERT_EQ(campaign({"run", toml.string(), "--shard", "0/2", "--out", (dir / "parts").string(), "-q"}).exit.code, 0);
+  // an edit that changes nothing of the physics still changes the case's text
+  std::ofstream(dir / "head_on.toml", std::ios::app) << "# edited\n";
+  const Finished r = campaign({"run", toml.string(), "--shard", "1/2", "--out", (dir / "parts").string(), "-q"});
+  EXPECT_EQ(r.exit.code, 2) << r.err;
+  EXPECT_NE(r.err.find("case 'head_on' was run from another text"), std::string::npos) << r.err;
+}
+
 TEST(CmdCampaign, AShardKilledMidRunResumesWithNoDuplicateAndNoLostRun) {
   const fs::path dir = fresh_dir("killed");
   const fs::path toml = campaign_file(dir);

@@ -8,7 +8,8 @@
 // and every ok engine's error, which must match the largest position error
 // computed here with h5py from the results file. Saves screenshots of the
 // first screen at both sizes and of the falling-ball force figure (paper
-// Fig. 5) next to the test.
+// Fig. 5) next to the test. Then a small campaign's report (issue 14): every
+// figure of its Markdown drawn on the page, its tables, no overflow.
 //
 // Usage: node browser_test.mjs --planarbench EXE --web-dir DIR --work DIR
 // Needs node >= 20, the npm packages of reports/web (scripts/setup_web.sh
@@ -79,6 +80,22 @@ run(['run', '--case', CASES.join(','), '--engine', ENGINES.join(','), '--out', r
 run(['report', results, '--out', reportDir], [0]);
 const html = path.join(reportDir, 'report.html');
 check(fs.existsSync(html), 'report.html written');
+
+// a small campaign (issue 14) and its report: the campaign section renders
+// every figure the Markdown has, without overflow, at both sizes
+const campaignToml = path.join(work, 'campaign.toml');
+fs.writeFileSync(campaignToml, [
+  '[campaign]', 'cases = ["falling_ball"]', 'engines = ["mujoco", "ode"]',
+  'metrics = ["position_error_m", "first_restitution", "trace"]', 'trace_points = 20',
+  '[[axis]]', 'key = "dt"', 'values = [1e-3, 1e-4]',
+  '[[axis]]', 'name = "state"', 'key = "bodies.*.velocity"', 'perturb = { sigma = 1e-2, samples = 3, seed = 2 }', ''].join('\n'));
+run(['campaign', 'run', campaignToml, '--out', path.join(work, 'campaign'), '--quiet'], [0]);
+run(['campaign', 'merge', path.join(work, 'campaign'), '--out', path.join(work, 'campaign.h5'), '--quiet'], [0]);
+run(['report', path.join(work, 'campaign.h5'), '--out', path.join(work, 'campaign_report')], [0]);
+const campaignHtml = path.join(work, 'campaign_report', 'report.html');
+const campaignMd = fs.readFileSync(path.join(work, 'campaign_report', 'report.md'), 'utf8');
+const campaignFigures = (campaignMd.match(/!\[[^\]]*\]\(figures\/[^)]+\.svg\)/g) || []).length;
+check(campaignFigures === 4, `campaign report.md has 4 figures (error and wall time against dt, spread at each dt): ${campaignFigures}`);
 check(fs.existsSync(path.join(reportDir, 'report.md')), 'report.md written');
 check(fs.existsSync(path.join(reportDir, 'figures', 'falling_ball_fig5.svg')), 'figures/falling_ball_fig5.svg written');
 
@@ -141,9 +158,10 @@ const foreignRequests = [];
 const pageUrl = pathToFileURL(html).href;
 try {
   // the page is self-contained: anything but the page itself is a failure
+  const campaignUrl = pathToFileURL(campaignHtml).href;
   await context.route('**/*', (route) => {
     const url = route.request().url();
-    if (url === pageUrl) return route.continue();
+    if (url === pageUrl || url === campaignUrl) return route.continue();
     foreignRequests.push(url);
     return route.abort();
   });
@@ -282,6 +300,20 @@ try {
     const zpng = path.join(path.dirname(work), 'falling_ball_fig5_episode0.png');
     await figure.screenshot({ path: zpng });
     check(fs.statSync(zpng).size > 10000, `screenshot ${zpng}`);
+  }
+
+  // the campaign's page
+  await page.goto(campaignUrl, { waitUntil: 'load' });
+  await page.waitForSelector('#campaign', { timeout: 60000 });
+  const plots = await page.locator('#campaign .wp-plot svg').count();
+  check(plots === campaignFigures, `campaign page draws its ${campaignFigures} figures: ${plots}`);
+  const tables = await page.locator('#campaign table').count();
+  check(tables >= 3, `campaign page has its tables (runs, against dt, spread): ${tables}`);
+  for (const [width, height] of [[1440, 900], [390, 844]]) {
+    await page.setViewportSize({ width, height });
+    await page.waitForTimeout(200);
+    const w = await page.evaluate(() => [document.documentElement.scrollWidth, window.innerWidth]);
+    check(w[0] <= w[1], `campaign page ${width}x${height}: no horizontal overflow (${w[0]} px in ${w[1]} px)`);
   }
 } finally {
   await context.close();
