@@ -105,9 +105,7 @@ std::vector<std::string> sweep_engines(const std::string& spec) {
 
 int run_sweep(const SweepOptionsCli& opt, int argc, char** argv) {
   // ---- options, then every case and rung validated before anything runs ----
-  if (opt.jobs < 1 || opt.jobs > 64) {
-    throw InputError("--jobs", 0, "", fmt::format("must be in [1, 64] (got {})", opt.jobs));
-  }
+  check_jobs(opt.jobs);
   check_repeat(opt.repeat);
   std::vector<double> dts =
       opt.dt_ladder.empty() ? default_dt_ladder() : parse_ladder(opt.dt_ladder, "--dt-ladder");
