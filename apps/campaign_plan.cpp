@@ -213,18 +213,50 @@ bool CampaignPlan::needs_truth() const {
                      [](const CampaignMetric& m) { return m.name == "position_error_m"; });
 }
 
-CampaignPlan::RunRef CampaignPlan::decode(std::int64_t id) const {
-  RunRef r;
-  r.point.resize(axes.size());
-  for (std::size_t k = axes.size(); k-- > 0;) {
-    const auto n = static_cast<std::int64_t>(axes[k].axis.values.size());
+CampaignPlan::RunRef decode_run(std::int64_t id, std::size_t engines,
+                                const std::vector<std::size_t>& axis_sizes) {
+  CampaignPlan::RunRef r;
+  r.point.resize(axis_sizes.size());
+  for (std::size_t k = axis_sizes.size(); k-- > 0;) {
+    const auto n = static_cast<std::int64_t>(axis_sizes[k]);
     r.point[k] = static_cast<std::size_t>(id % n);
     id /= n;
   }
-  const auto e = static_cast<std::int64_t>(engines.size());
+  const auto e = static_cast<std::int64_t>(engines);
   r.engine_index = static_cast<std::size_t>(id % e);
   r.case_index = static_cast<std::size_t>(id / e);
   return r;
+}
+
+namespace {
+// "run 7: falling_ball x ode, dt=0.001, state=1"
+std::string run_text(std::int64_t id, const std::string& case_name, const std::string& engine,
+                     const std::vector<const CampaignAxis*>& axes,
+                     const std::vector<std::size_t>& point) {
+  std::string out = fmt::format("run {}: {} x {}", id, case_name, engine);
+  for (std::size_t k = 0; k < axes.size(); ++k) {
+    out += fmt::format(", {}={}", axes[k]->name, text_of(axes[k]->values[point[k]]));
+  }
+  return out;
+}
+}  // namespace
+
+std::string describe_run(const CampaignTable& t, std::int64_t id) {
+  std::vector<std::size_t> sizes;
+  std::vector<const CampaignAxis*> axes;
+  for (const auto& a : t.axes) {
+    sizes.push_back(a.values.size());
+    axes.push_back(&a);
+  }
+  const auto r = decode_run(id, t.engines.size(), sizes);
+  return run_text(id, r.case_index < t.cases.size() ? t.cases[r.case_index].name : "?",
+                  t.engines.at(r.engine_index), axes, r.point);
+}
+
+CampaignPlan::RunRef CampaignPlan::decode(std::int64_t id) const {
+  std::vector<std::size_t> sizes;
+  for (const auto& a : axes) sizes.push_back(a.axis.values.size());
+  return decode_run(id, engines.size(), sizes);
 }
 
 std::vector<std::pair<std::string, std::string>> CampaignPlan::assignments(const RunRef& r) const {
@@ -283,12 +315,9 @@ double CampaignPlan::cost(std::int64_t id) const {
 
 std::string CampaignPlan::describe(std::int64_t id) const {
   const RunRef r = decode(id);
-  std::string out = fmt::format("run {}: {} x {}", id, cases[r.case_index].c.name,
-                                engines[r.engine_index]);
-  for (std::size_t k = 0; k < axes.size(); ++k) {
-    out += fmt::format(", {}={}", axes[k].axis.name, text_of(axes[k].axis.values[r.point[k]]));
-  }
-  return out;
+  std::vector<const CampaignAxis*> a;
+  for (const auto& x : axes) a.push_back(&x.axis);
+  return run_text(id, cases[r.case_index].c.name, engines[r.engine_index], a, r.point);
 }
 
 std::pair<int, int> parse_shard(const std::string& text, const std::string& option) {

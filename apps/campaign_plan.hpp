@@ -87,6 +87,15 @@ struct CampaignPlan {
   [[nodiscard]] std::string describe(std::int64_t id) const;
 };
 
+// The run `id` of a campaign of `engines` engines and axes of `axis_sizes`
+// points: the case outermost, the last axis innermost.
+[[nodiscard]] CampaignPlan::RunRef decode_run(std::int64_t id, std::size_t engines,
+                                              const std::vector<std::size_t>& axis_sizes);
+
+// "run 7: falling_ball x ode, dt=0.001, state=1" from a campaign file's header
+// (what merge names, without the campaign's case files)
+[[nodiscard]] std::string describe_run(const CampaignTable& t, std::int64_t id);
+
 // Reads and validates the campaign file: every error is an InputError naming
 // the file, the line, the field and what is allowed; every case is loaded and
 // every axis point checked against every case and engine before anything runs.

@@ -216,27 +216,25 @@ void fill_run(hid_t group, const RunResult& r, internal::ChunkWriter* writer) {
   write_events(g, r, writer);
 }
 
+// --set overrides as a JSON object, in the order given
+nlohmann::ordered_json overrides_json(const std::vector<std::pair<std::string, std::string>>& o) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  for (const auto& [key, value] : o) j[key] = value;
+  return j;
+}
+
 // the case's group and attributes, with one empty group per run in order
 void write_case_header(hid_t runs, const CaseRuns& c) {
   Hid g = create_group(runs, c.case_name);
   internal::write_string_attribute(g.get(), "case_text", c.case_text);
   internal::write_string_attribute(g.get(), "case_sha256", internal::sha256_hex(c.case_text));
   internal::write_string_attribute(g.get(), "case_path", c.case_path);
-  // --set overrides as a JSON object, in the order given
-  nlohmann::ordered_json overrides = nlohmann::ordered_json::object();
-  for (const auto& [key, value] : c.overrides) overrides[key] = value;
-  internal::write_string_attribute(g.get(), "overrides", json_text(overrides));
+  internal::write_string_attribute(g.get(), "overrides", json_text(overrides_json(c.overrides)));
   for (const auto& r : c.runs) (void)create_group(g.get(), r.engine_name);
 }
 
 
 // ---- the campaign table (campaign_table.hpp) ----------------------------------
-
-nlohmann::ordered_json overrides_json(const std::vector<std::pair<std::string, std::string>>& o) {
-  nlohmann::ordered_json j = nlohmann::ordered_json::object();
-  for (const auto& [key, value] : o) j[key] = value;
-  return j;
-}
 
 // rows of a column, row-major [n, cols]; NaN where a run has fewer values
 std::vector<double> padded_rows(const std::vector<CampaignRun>& runs, std::size_t cols,
@@ -393,6 +391,19 @@ Json parse_json_attribute(hid_t loc, const char* name) {
   }
 }
 
+// a case group's `overrides` attribute (a JSON object) back to its pairs, in order
+std::vector<std::pair<std::string, std::string>> read_overrides(hid_t case_group) {
+  const auto overrides = parse_json_attribute<nlohmann::ordered_json>(case_group, "overrides");
+  if (!overrides.is_object()) {
+    throw Hdf5Error(internal::object_path(case_group), "attribute 'overrides' is not a JSON object");
+  }
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& [key, value] : overrides.items()) {
+    out.emplace_back(key, value.is_string() ? value.get<std::string>() : value.dump());
+  }
+  return out;
+}
+
 RunStatus parse_status_name(const std::string& s, const std::string& object) {
   for (RunStatus st : {RunStatus::ok, RunStatus::diverged, RunStatus::unsupported}) {
     if (s == run_status_name(st)) return st;
@@ -515,13 +526,7 @@ CaseRuns read_case(hid_t runs, const std::string& name) {
   if (sha != internal::sha256_hex(c.case_text)) {
     throw Hdf5Error(internal::object_path(g.get()), "case_sha256 does not match case_text");
   }
-  const auto overrides = parse_json_attribute<nlohmann::ordered_json>(g.get(), "overrides");
-  if (!overrides.is_object()) {
-    throw Hdf5Error(internal::object_path(g.get()), "attribute 'overrides' is not a JSON object");
-  }
-  for (const auto& [key, value] : overrides.items()) {
-    c.overrides.emplace_back(key, value.is_string() ? value.get<std::string>() : value.dump());
-  }
+  c.overrides = read_overrides(g.get());
   for (const auto& engine : child_names(g.get())) c.runs.push_back(read_run(g.get(), name, engine));
   return c;
 }
@@ -566,10 +571,7 @@ CampaignTable read_campaign(hid_t file) {
         throw Hdf5Error(internal::object_path(cg.get()), "case_sha256 does not match case_text");
       }
       c.path = internal::read_string_attribute(cg.get(), "case_path");
-      const auto o = parse_json_attribute<nlohmann::ordered_json>(cg.get(), "overrides");
-      for (const auto& [key, value] : o.items()) {
-        c.overrides.emplace_back(key, value.is_string() ? value.get<std::string>() : value.dump());
-      }
+      c.overrides = read_overrides(cg.get());
       c.duration_s = internal::read_double_attribute(cg.get(), "duration_s");
       c.truth = internal::read_string_attribute(cg.get(), "truth");
       c.truth_note = internal::read_string_attribute(cg.get(), "truth_note");
