@@ -204,6 +204,18 @@ std::string assignments_json(const std::vector<std::pair<std::string, std::strin
   return j.dump();
 }
 
+// whose collision and contact force made a run: the adapter's
+// mapping.physics without its parameter text (SPEC §5b)
+std::string physics_json(const nlohmann::json& mapping) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  if (!mapping.is_object() || !mapping.contains("physics")) return out.dump();
+  const nlohmann::json& p = mapping.at("physics");
+  for (const char* key : {"mode", "collision_by", "contact_force_by", "foreknowledge"}) {
+    if (p.contains(key)) out[key] = p.at(key);
+  }
+  return out.dump();
+}
+
 int run_campaign(const CampaignOptionsCli& opt, int argc, char** argv) {
   check_jobs(opt.jobs);
   // plain variables, not a structured binding: lambdas below capture them
@@ -360,6 +372,7 @@ int run_campaign(const CampaignOptionsCli& opt, int argc, char** argv) {
     row.case_name = c.name;
     row.engine = engine_name;
     row.overrides = assignments_json(own);
+    row.physics = physics_json(r.mapping);
     row.status = r.status;
     row.reason = r.status == RunStatus::ok ? "" : r.reason;
     if (r.status == RunStatus::diverged && r.diverged_at_s >= 0.0) {

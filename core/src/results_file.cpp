@@ -288,7 +288,8 @@ void write_campaign(hid_t file, const CampaignTable& t) {
   Hid runs = create_group(g.get(), "runs");
   const std::size_t n = t.runs.size();
   std::vector<std::int64_t> id(n), steps(n);
-  std::vector<std::string> case_name(n), engine(n), series(n), overrides(n), status(n), reason(n);
+  std::vector<std::string> case_name(n), engine(n), series(n), overrides(n), physics(n), status(n),
+      reason(n);
   std::vector<double> wall(n);
   for (std::size_t i = 0; i < n; ++i) {
     const CampaignRun& r = t.runs[i];
@@ -298,6 +299,7 @@ void write_campaign(hid_t file, const CampaignTable& t) {
     engine[i] = r.engine;
     series[i] = r.series;
     overrides[i] = r.overrides;
+    physics[i] = r.physics;
     status[i] = run_status_name(r.status);
     reason[i] = r.reason;
     wall[i] = r.wall_time_s;
@@ -311,6 +313,7 @@ void write_campaign(hid_t file, const CampaignTable& t) {
   internal::write_string_dataset(runs.get(), "engine", engine, "");
   internal::write_string_dataset(runs.get(), "series", series, "");
   internal::write_string_dataset(runs.get(), "overrides", overrides, "");
+  internal::write_string_dataset(runs.get(), "physics", physics, "");
   internal::write_string_dataset(runs.get(), "status", status, "");
   internal::write_string_dataset(runs.get(), "reason", reason, "");
   internal::write_int64_dataset(runs.get(), "steps", steps, "1");
@@ -601,7 +604,7 @@ CampaignTable read_campaign(hid_t file) {
   const auto steps = internal::read_int64_dataset(runs.get(), "steps");
   const auto wall = internal::read_double_array_attribute(runs.get(), "wall_time_s");
   std::vector<std::vector<std::string>> strings;
-  for (const char* col : {"case", "engine", "series", "overrides", "status", "reason"}) {
+  for (const char* col : {"case", "engine", "series", "overrides", "physics", "status", "reason"}) {
     strings.push_back(internal::read_string_dataset(runs.get(), col));
     if (strings.back().size() != n) throw Hdf5Error(object + "/" + col, "has not one row per run");
   }
@@ -618,8 +621,9 @@ CampaignTable read_campaign(hid_t file) {
     r.engine = strings[1][i];
     r.series = strings[2][i];
     r.overrides = strings[3][i];
-    r.status = parse_status_name(strings[4][i], object + "/status");
-    r.reason = strings[5][i];
+    r.physics = strings[4][i];
+    r.status = parse_status_name(strings[5][i], object + "/status");
+    r.reason = strings[6][i];
   }
   {
     Hid axis = open_group(runs.get(), "axis");

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <nlohmann/json.hpp>
 
 #include "planarbench/run_result.hpp"
 #include "report_svg.hpp"
@@ -304,14 +305,30 @@ CampaignSection campaign_section(const CampaignTable& t, const std::string& file
     Table runs_table;
     runs_table.id = file_safe(c.name) + "_campaign_runs";
     runs_table.title = c.name + ": runs per engine";
+    runs_table.note =
+        "Whose physics: the mode, whose collision detection found the contacts and whose "
+        "contact model made the force (the engine's own by default; a run with foreknowledge "
+        "of its future, the opt-in oracle mode, is marked).";
     runs_table.columns = {"engine", "runs", "ok", "diverged", "unsupported", "median wall time per run, s",
-                          "CPU time, s"};
+                          "CPU time, s", "whose physics"};
     for (const auto& e : t.engines) {
       std::size_t n = 0, ok = 0, div = 0, uns = 0;
       std::vector<double> walls;
       double total = 0.0;
+      std::vector<std::string> physics;  // the distinct attributions of the engine's runs
+      bool foreknowledge = false;
       for (const auto* r : rows) {
         if (r->engine != e) continue;
+        const auto p = nlohmann::json::parse(r->physics, nullptr, false);
+        const bool future = p.is_object() && p.value("foreknowledge", false);
+        foreknowledge = foreknowledge || future;
+        const std::string text =
+            p.is_object() && p.contains("mode")
+                ? fmt::format("{}: collision by {}, force by {}{}", p.value("mode", ""),
+                              p.value("collision_by", ""), p.value("contact_force_by", ""),
+                              future ? ", WITH FOREKNOWLEDGE (oracle)" : "")
+                : "not recorded";
+        if (std::find(physics.begin(), physics.end(), text) == physics.end()) physics.push_back(text);
         ++n;
         ok += r->status == RunStatus::ok;
         div += r->status == RunStatus::diverged;
@@ -320,10 +337,12 @@ CampaignSection campaign_section(const CampaignTable& t, const std::string& file
         total += r->wall_time_s;
       }
       if (n == 0) continue;
+      std::string whose;
+      for (const auto& x : physics) whose += (whose.empty() ? "" : "; ") + x;
       runs_table.rows.push_back({e, std::to_string(n), std::to_string(ok), std::to_string(div),
                                  std::to_string(uns), number_text(median_of(walls)),
-                                 number_text(total)});
-      runs_table.row_status.push_back(div + uns > 0 ? "fail" : "");
+                                 number_text(total), whose});
+      runs_table.row_status.push_back(div + uns > 0 || foreknowledge ? "fail" : "");
     }
     sec.tables.push_back(std::move(runs_table));
 

@@ -110,6 +110,11 @@ TEST(CmdCampaign, MergedFileReadsWithH5pyAndHoldsEveryRunInOrder) {
   // 6 runs), and the truth of head_on is the reference
   EXPECT_EQ(j["status"]["ok"], kRuns - 6);
   EXPECT_EQ(j["status"]["unsupported"], 6);
+  // every run says whose physics made it: the engines as their users run them
+  // by default (SPEC §5b), the closed form for the truth engine
+  EXPECT_EQ(j["physics"]["mujoco"], nlohmann::json::array({"native: force by engine"}));
+  EXPECT_EQ(j["physics"]["ode"], nlohmann::json::array({"native: force by engine"}));
+  EXPECT_EQ(j["physics"]["analytic"], nlohmann::json::array({"closed form: force by closed form"}));
   // the analytic engine against the truth of its own initial state: exactly 0
   // (a truth taken at the nominal state would be off by ~ 1e-2 m/s x 2.5 s)
   ASSERT_EQ(j["analytic_position_error_m"].size(), 6u);

@@ -7,7 +7,8 @@ Checks the layout of /campaign on the way (core/include/planarbench/
 campaign_table.hpp): every column has a `unit` and one row per run, ids are
 0..n-1 in order, status words are known, wall_time_s has a value per run, the
 trace has shape [n, 2 B T], each case's digest matches its text. Prints, as
-one JSON object on stdout: runs, planned_runs, axes, status counts, the
+one JSON object on stdout: runs, planned_runs, axes, status counts, each
+engine's "mode: force by ..." attributions (the physics column), the
 position errors of the analytic engine and of the others (runs ok), and
 whether every ok run's trace starts at its case's initial positions (the case text's, or the
 run's overrides where they set a body's position). Exits 1 on any violation
@@ -59,7 +60,7 @@ def main():
         out["planned_runs"] = int(g.attrs["planned_runs"])
         out["axes"] = list(g["axes"].keys())
         cols = {}
-        for name in ["id", "case", "engine", "series", "overrides", "status", "reason", "steps"]:
+        for name in ["id", "case", "engine", "series", "overrides", "physics", "status", "reason", "steps"]:
             d = runs[name]
             if "unit" not in d.attrs:
                 fail(f"/campaign/runs/{name}", "no unit attribute")
@@ -80,6 +81,11 @@ def main():
                 fail("/campaign/runs/status", f"unknown status {s!r}")
             status[s] = status.get(s, 0) + 1
         out["status"] = status
+        whose = {}
+        for engine, physics in zip(cols["engine"], cols["physics"]):
+            p = json.loads(physics)
+            whose.setdefault(engine, set()).add(f'{p.get("mode")}: force by {p.get("contact_force_by")}')
+        out["physics"] = {e: sorted(v) for e, v in whose.items()}
         cases = {}
         for name, cg in g["cases"].items():
             t = text(cg.attrs["case_text"])

@@ -56,6 +56,9 @@ CampaignTable table() {
         r.metrics = {10 * dt + (e == "b" ? s : 0)};
         r.trace_time_s = {0, 1, 2};
         r.trace_position_m = {0, 0, 1.0 * s, 0, 2.0 * s, 0};
+        if (e == "a") {
+          r.physics = R"({"mode":"native","collision_by":"engine","contact_force_by":"engine","foreknowledge":false})";
+        }
         t.runs.push_back(r);
       }
     }
@@ -68,7 +71,11 @@ TEST(ReportCampaign, AxisTableHasTheMedianAndRangeOfEachPoint) {
   ASSERT_EQ(sec.cases.size(), 1u);
   const auto& tables = sec.cases[0].tables;
   ASSERT_EQ(tables.size(), 3u);  // runs, the dt axis, the spread
-  EXPECT_EQ(tables[0].rows[0], (std::vector<std::string>{"a", "6", "6", "0", "0", "0.0055", "0.033"}));
+  EXPECT_EQ(tables[0].rows[0],
+            (std::vector<std::string>{"a", "6", "6", "0", "0", "0.0055", "0.033", "native: collision by engine, force by engine"}));
+  // b's runs say nothing of their physics: the table says so, it does not guess
+  EXPECT_EQ(tables[0].rows[1].back(), "not recorded");
+  EXPECT_EQ(tables[0].row_status[0], "");
   const auto& axis = tables[1];
   ASSERT_EQ(axis.rows.size(), 4u);
   // engine a at dt 1e-4: the metric is 1e-3 for every sample; b: 1e-3 + {0, 1, 2}
@@ -77,6 +84,18 @@ TEST(ReportCampaign, AxisTableHasTheMedianAndRangeOfEachPoint) {
   EXPECT_EQ(axis.rows[0][3], "0.001");
   EXPECT_EQ(axis.rows[2][0], "b");
   EXPECT_EQ(axis.rows[2][3], "1.001 (0.001..2.001)");
+}
+
+TEST(ReportCampaign, ARunWithForeknowledgeIsMarked) {
+  CampaignTable t = table();
+  t.runs[0].physics = R"({"mode":"oracle","collision_by":"engine","contact_force_by":"engine","foreknowledge":true})";
+  const auto sec = pb::internal::campaign_section(t, "toy.h5");
+  const auto& runs = sec.cases[0].tables[0];
+  EXPECT_EQ(runs.row_status[0], "fail");
+  EXPECT_NE(runs.rows[0].back().find("oracle: collision by engine, force by engine, WITH FOREKNOWLEDGE"),
+            std::string::npos)
+      << runs.rows[0].back();
+  EXPECT_NE(runs.rows[0].back().find("; native: "), std::string::npos) << runs.rows[0].back();
 }
 
 TEST(ReportCampaign, SpreadGrowsAsTheSamplesFanOut) {

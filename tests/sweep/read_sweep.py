@@ -29,7 +29,7 @@ CASE_ATTRS = ["case_text", "case_sha256", "case_path", "overrides", "duration_s"
 SERIES_KEYS = ["name", "engine", "knob", "knob_key", "knob_unit", "default_value",
                "fixed_settings"]
 COLUMNS = {  # name: unit
-    "id": "1", "case": "", "engine": "", "series": "", "overrides": "", "status": "",
+    "id": "1", "case": "", "engine": "", "series": "", "overrides": "", "physics": "", "status": "",
     "reason": "", "steps": "1", "axis/dt": "s", "axis/rtol": "1", "metric/position_error_m": "m"}
 STATUS = {"ok", "diverged", "unsupported"}
 

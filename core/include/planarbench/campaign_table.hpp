@@ -20,6 +20,9 @@
 //     id [n]                      the run's index in the campaign's plan
 //     case, engine, series [n]    strings; series names a sweep's ladder ("" otherwise)
 //     overrides [n]               JSON: the --set assignments the run got from its axes
+//     physics [n]                 JSON: whose collision and contact force made the run
+//                                 (mode, collision_by, contact_force_by, foreknowledge: the
+//                                 adapter's mapping.physics, SPEC §5b); {} for a sweep's rung
 //     status, reason [n]          ok | diverged | unsupported, and why
 //     steps [n]                   the engine's steps
 //     axis/<axis> [n]             the run's point on that axis (NaN: not on it)
@@ -66,6 +69,7 @@ struct CampaignRun {
   std::string engine;
   std::string series;
   std::string overrides;  // JSON object text
+  std::string physics = "{}";  // JSON object text: mode, collision_by, contact_force_by, foreknowledge
   RunStatus status{};
   std::string reason;
   std::int64_t steps = 0;
