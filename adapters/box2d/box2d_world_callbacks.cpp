@@ -121,7 +121,7 @@ void PairContactListener::PreSolve(b2Contact* contact, const b2Manifold* old_man
     if (pairs_.pair(body_index(*c->GetFixtureA()), body_index(*c->GetFixtureB())) != k) continue;
     c->SetRestitution(static_cast<float>(st.restitution));
     c->SetRestitutionThreshold(static_cast<float>(st.threshold_mps));
-    c->SetFriction(0.0f);
+    c->SetFriction(st.friction);
   }
 }
 

@@ -47,6 +47,7 @@ struct PairState {
   bool per_onset = false;      // restitution recomputed at each onset (depends on m_eff)
   double restitution = 0.0;    // the value set on the pair's contacts (last computed)
   double threshold_mps = 1.0;  // m/s, restitution velocity threshold
+  float friction = 0.0f;       // the pair's Coulomb coefficient (SPEC §7), set per contact
   double step_impulse_ns =
       0.0;  // N s, normal impulses of the current step (all points, TOI included)
 };
@@ -61,7 +62,7 @@ struct OnsetRecord {
   double restitution = 0.0;
 };
 
-// Sets each contact's restitution when it begins, in its first PreSolve
+// Sets each contact's restitution (and the pair's friction) when it begins, in its first PreSolve
 // (b2Contact::SetRestitution persists for the contact's life, so Box2D's
 // max-mixing of fixture values never applies), from the state Box2D has then:
 // the pair's touching manifold points (every touching contact of the two

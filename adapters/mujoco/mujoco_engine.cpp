@@ -27,6 +27,8 @@
 #include "mujoco_injector.hpp"
 #include "mujoco_mjcf.hpp"
 #include "mujoco_model.hpp"
+#include "mujoco_plan.hpp"
+#include "mujoco_friction.hpp"
 #include "mujoco_pair_state.hpp"
 #include "mujoco_probe.hpp"
 #include "mujoco_settings.hpp"
@@ -92,6 +94,8 @@ class MujocoEngine final : public Engine {
 
  private:
   MjcfOptions base_options() const;
+  // the model of options (and the layout_ of its names), written from plan_
+  ModelPtr load(const MjcfOptions& options);
   PairParams pair_params(std::size_t k, bool inactive) const;
   Calibration calibration(std::size_t k, const FirstTouch& t) const;
   void build_oracle(nlohmann::json& pairs, nlohmann::json& lost);
@@ -107,6 +111,7 @@ class MujocoEngine final : public Engine {
   SettingsBinder binder_;
 
   Case case_;
+  MujocoPlan plan_;  // the case's MuJoCo form, decided once per build
   double dt_s_ = 1e-4;
   bool inject_ = false;
   bool oracle_ = false;
@@ -122,7 +127,6 @@ class MujocoEngine final : public Engine {
   std::vector<Vec2> last_point_m_;    // per pair: last contact point seen
   std::vector<Vec2> last_normal_;     // per pair: last normal seen (a -> b)
   std::vector<bool> seen_;
-  std::vector<bool> check_depth_;  // per pair: MPR collider with an exact depth here
   std::vector<DepthCheck> depth_;  // per pair
   EpisodeTracker tracker_;
   long steps_ = 0;
@@ -144,18 +148,23 @@ MjcfOptions MujocoEngine::base_options() const {
   o.solver = settings_.solver;
   o.iterations = settings_.iterations;
   o.tolerance = settings_.tolerance;
+  o.cone = settings_.cone;
+  o.impratio = settings_.impratio;
+  o.noslip_iterations = settings_.noslip_iterations;
   return o;
 }
 
+ModelPtr MujocoEngine::load(const MjcfOptions& options) {
+  ModelPtr m = load_mjcf(write_mjcf(case_, plan_, options));
+  layout_ = model_layout(m.get(), case_, plan_);
+  return m;
+}
+
 PairParams MujocoEngine::pair_params(std::size_t k, bool inactive) const {
-  const ContactPair& cp = case_.contacts[k];
-  const auto ga = geom_type(case_.bodies[static_cast<std::size_t>(cp.body_a)].shape);
-  const auto gb = geom_type(case_.bodies[static_cast<std::size_t>(cp.body_b)].shape);
   PairParams p;
-  // a margin spoils MPR's depth: only exact colliders report ahead of touch
-  p.margin_m = collider(ga, gb) == Collider::exact ? settings_.detection_margin_m : 0.0;
   // gap = margin: active below distance 0; inactive: never active
-  p.gap_m = inactive ? p.margin_m + kInactiveGapM : p.margin_m;
+  const double margin = plan_.pairs[k].margin_m;
+  p.gap_m = inactive ? margin + kInactiveGapM : margin;
   for (std::size_t i = 0; i < 5; ++i) p.solimp[i] = settings_.solimp[i];
   return p;
 }
@@ -187,8 +196,7 @@ void MujocoEngine::build_oracle(nlohmann::json& pairs, nlohmann::json& lost) {
   const std::size_t np = case_.contacts.size();
   MjcfOptions options = base_options();
   for (std::size_t k = 0; k < np; ++k) options.pairs.push_back(pair_params(k, true));
-  const ModelPtr inactive = load_mjcf(write_mjcf(case_, options));
-  layout_ = model_layout(inactive.get(), case_);
+  const ModelPtr inactive = load(options);
   // where and how each pair first meets: calibrates the solref and tells how
   // many steps an impact spans
   long probe_steps = 0;
@@ -217,8 +225,7 @@ void MujocoEngine::build_oracle(nlohmann::json& pairs, nlohmann::json& lost) {
           lm.force_duration_s / (2.0 * kMinStepsPerImpact)));
     }
   }
-  model_ = load_mjcf(write_mjcf(case_, options));
-  layout_ = model_layout(model_.get(), case_);
+  model_ = load(options);
   add_soft_contact_notes(lost);
   lost.push_back(
       "solref is per unit effective mass at one configuration (the first touch); where the "
@@ -283,6 +290,7 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
     throw EngineError("mujoco: cannot run case '" + c.name + "': " + cap.reason);
   }
   case_ = c;
+  plan_ = plan_mujoco(case_, settings_.detection_margin_m);
   dt_s_ = settings_.dt_s;
   steps_ = 0;
   probe_steps_ = 0;
@@ -303,8 +311,7 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
     // every pair inactive: MuJoCo finds the contacts, the adapter applies the law
     MjcfOptions options = base_options();
     for (std::size_t k = 0; k < np; ++k) options.pairs.push_back(pair_params(k, true));
-    model_ = load_mjcf(write_mjcf(case_, options));
-    layout_ = model_layout(model_.get(), case_);
+    model_ = load(options);
     for (std::size_t k = 0; k < np; ++k) {
       if (!layout_.pairs[k].present) {
         pairs.push_back(not_simulated(k));
@@ -333,8 +340,7 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
       p.solref = {0.0, 0.0};  // direct form, no spring: set by the rule once pressed
       options.pairs.push_back(p);
     }
-    model_ = load_mjcf(write_mjcf(case_, options));
-    layout_ = model_layout(model_.get(), case_);
+    model_ = load(options);
     for (std::size_t k = 0; k < np; ++k) {
       if (!layout_.pairs[k].present) {
         pairs.push_back(not_simulated(k));
@@ -353,19 +359,19 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
   }
   for (std::size_t k = 0; k < np; ++k) {
     const ContactPair& cp = case_.contacts[k];
-    const auto ga = geom_type(case_.bodies[static_cast<std::size_t>(cp.body_a)].shape);
-    const auto gb = geom_type(case_.bodies[static_cast<std::size_t>(cp.body_b)].shape);
+    const PairPlan& pp = plan_.pairs[k];
     const PairParams p = pair_params(k, inject_);
     nlohmann::json& j = pairs[k];
     j["name"] = cp.name;
     j["body_a"] = case_.bodies[static_cast<std::size_t>(cp.body_a)].name;
     j["body_b"] = case_.bodies[static_cast<std::size_t>(cp.body_b)].name;
-    j["collider"] = collider_description(ga, gb);
-    j["condim"] = 1;
-    j["margin_m"] = p.margin_m;
+    j["collider"] = collider_description(pp.geom_a, pp.geom_b);
+    j["condim"] = pp.condim;
+    j["margin_m"] = pp.margin_m;
     j["gap_m"] = p.gap_m;
     if (!inject_) j["solimp"] = settings_.solimp;
-    if (collider(ga, gb) == Collider::mpr) {
+    if (cp.has_friction()) j["friction"] = friction_mapping(cp.friction, settings_);
+    if (pp.collider == Collider::mpr) {
       lost.push_back(fmt::format(
           "pair '{}': penetration from libccd MPR, depth error ~1e-6 m (measured 0.8-2.6e-6 m "
           "for a sphere against an ellipsoid at 30-150 um penetration, mpr_tolerance 1e-6); "
@@ -388,14 +394,6 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
   last_normal_.assign(np, Vec2::Zero());
   seen_.assign(np, false);
   depth_.assign(np, DepthCheck{});
-  check_depth_.assign(np, false);
-  for (std::size_t k = 0; k < np; ++k) {
-    const ContactPair& cp = case_.contacts[k];
-    const Shape& sa = case_.bodies[static_cast<std::size_t>(cp.body_a)].shape;
-    const Shape& sb = case_.bodies[static_cast<std::size_t>(cp.body_b)].shape;
-    check_depth_[k] = collider(geom_type(sa), geom_type(sb)) == Collider::mpr &&
-                      exact_penetration_m(sa, BodyState{}, sb, BodyState{}).has_value();
-  }
   forward_current_ = false;
   sampled_ = false;
   probe_steps_ = integrations_on_this_thread() - steps_at_start;
@@ -429,7 +427,7 @@ nlohmann::json MujocoEngine::describe_bodies() const {
   nlohmann::json out = nlohmann::json::array();
   for (std::size_t i = 0; i < case_.bodies.size(); ++i) {
     const Body& b = case_.bodies[i];
-    const GeomType g = geom_type(b.shape);
+    const GeomType g = plan_.bodies[i].geom;
     nlohmann::json j = {
         {"name", b.name}, {"shape", shape_type_name(b.shape)}, {"geom", geom_type_name(g)}};
     if (const auto* e = std::get_if<Ellipse>(&b.shape)) {
@@ -437,6 +435,8 @@ nlohmann::json MujocoEngine::describe_bodies() const {
       j["ellipsoid_semi_axes_m"] = {s[0], s[1], s[2]};
       j["note"] = "third (out-of-plane) semi-axis min(a, b); its section y = 0 is the ellipse";
     } else if (std::holds_alternative<Polygon>(b.shape)) {
+      j["geoms"] = plan_.bodies[i].geom_count();
+      if (plan_.bodies[i].decomposed) j["decomposition"] = plan_.bodies[i].decomposition;
       j["note"] =
           "convex mesh: a bipyramid whose section y = 0 is the polygon; MuJoCo stores mesh "
           "vertices in single precision (mjModel::mesh_vert is float): ~6e-8 relative";
@@ -446,7 +446,7 @@ nlohmann::json MujocoEngine::describe_bodies() const {
     if (b.fixed) {
       j["joints"] = "none: a geom of the world body";
     } else {
-      j["joints"] = joint_of_body(case_, static_cast<int>(i)) >= 0
+      j["joints"] = plan_.bodies[i].joint >= 0
                         ? "hinge about +y at the pivot"
                         : "slide x, slide z, hinge about +y through the centre of mass";
       j["inertial"] = fmt::format(
@@ -507,7 +507,7 @@ void MujocoEngine::sample() {
     const int a = case_.contacts[k].body_a;
     const int b = case_.contacts[k].body_b;
     const PairObservation& o = obs_[k];
-    if (o.reported && o.penetration_m > 0.0 && check_depth_[k]) {
+    if (o.reported && o.penetration_m > 0.0 && plan_.pairs[k].check_depth) {
       const auto exact = exact_penetration_m(
           case_.bodies[static_cast<std::size_t>(a)].shape, state_of(static_cast<std::size_t>(a)),
           case_.bodies[static_cast<std::size_t>(b)].shape, state_of(static_cast<std::size_t>(b)));
@@ -588,7 +588,7 @@ nlohmann::json MujocoEngine::mapping() const {
         {"largest_sigma", rule_->largest_scale()}};
   }
   for (std::size_t k = 0; k < depth_.size() && m.contains("pairs"); ++k) {
-    if (!check_depth_[k]) continue;
+    if (!plan_.pairs[k].check_depth) continue;
     m["pairs"][k]["mpr_depth_check"] = {
         {"what",
          "MuJoCo's (MPR) penetration against the exact circle-ellipse penetration, "

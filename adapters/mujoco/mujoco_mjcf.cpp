@@ -7,7 +7,6 @@
 
 #include "mujoco_frame.hpp"
 #include "mujoco_geometry.hpp"
-#include "planarbench/outline.hpp"
 #include "planarbench/errors.hpp"
 
 namespace pb::internal::mujoco {
@@ -32,18 +31,10 @@ Vec2 rotated(const Vec2& v, double theta) {
   return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
 }
 
-// the number of geoms of a body: one per convex piece of a polygon, else one
-int piece_count(const Body& b) {
-  if (const auto* p = std::get_if<Polygon>(&b.shape)) {
-    return static_cast<int>(polygon_pieces(*p).pieces.size());
-  }
-  return 1;
-}
-
 // the geoms of body i (one per piece), placed at `pos` with orientation `q`
 // in its parent
-std::string geom_elements(const Body& b, int i, const std::array<double, 3>& pos,
-                          const std::array<double, 4>& q) {
+std::string geom_elements(const Body& b, const BodyPlan& plan, int i,
+                          const std::array<double, 3>& pos, const std::array<double, 4>& q) {
   // collisions only through explicit <pair>s: contype = conaffinity = 0
   auto common = [&](int piece) {
     return fmt::format(R"(name="{}" pos="{}" quat="{}" contype="0" conaffinity="0" condim="1")",
@@ -59,8 +50,7 @@ std::string geom_elements(const Body& b, int i, const std::array<double, 3>& pos
                              vec3(ellipsoid_size_m(s)));
         } else if constexpr (std::is_same_v<T, Polygon>) {
           std::string out;
-          const int n = static_cast<int>(polygon_pieces(s).pieces.size());
-          for (int k = 0; k < n; ++k) {
+          for (int k = 0; k < plan.geom_count(); ++k) {
             out += fmt::format(R"(<geom {} type="mesh" mesh="{}"/>)", common(k), mesh_name(i, k));
           }
           return out;
@@ -73,17 +63,12 @@ std::string geom_elements(const Body& b, int i, const std::array<double, 3>& pos
       b.shape);
 }
 
-// one mesh asset per convex piece: a bipyramid over the body origin for a
-// whole convex polygon, over the piece's centroid for a piece (the apexes
-// must lie over the piece for its section y = 0 to be the piece)
-std::string mesh_assets(const Polygon& p, int i) {
-  const PolygonPieces pp = polygon_pieces(p);
+// one mesh asset per convex piece: a bipyramid over the plan's apex
+std::string mesh_assets(const BodyPlan& plan, int i) {
   std::string out;
-  for (std::size_t k = 0; k < pp.pieces.size(); ++k) {
-    const Vec2 apex =
-        pp.decomposed ? polygon_area_properties(pp.pieces[k].points_m).centroid_m : Vec2::Zero();
+  for (std::size_t k = 0; k < plan.pieces.size(); ++k) {
     std::string v;
-    for (const auto& x : bipyramid_vertices(pp.pieces[k], apex)) {
+    for (const auto& x : bipyramid_vertices(plan.pieces[k], plan.apexes[k])) {
       if (!v.empty()) v.append("  ");
       v.append(vec3(x));
     }
@@ -102,9 +87,9 @@ std::string inertial_element(const Body& b, const std::array<double, 3>& pos) {
                      num(b.mass_kg), inertia, inertia, inertia);
 }
 
-std::string moving_body(const Case& c, int i) {
+std::string moving_body(const Case& c, const BodyPlan& plan, int i) {
   const Body& b = c.bodies[static_cast<std::size_t>(i)];
-  const int j = joint_of_body(c, i);
+  const int j = plan.joint;
   const std::array<double, 4> identity = {1.0, 0.0, 0.0, 0.0};
   std::string s;
   if (j < 0) {
@@ -114,7 +99,7 @@ std::string moving_body(const Case& c, int i) {
     s += fmt::format(R"(<joint name="{}" type="slide" axis="0 0 1"/>)", slide_z_name(i));
     s += fmt::format(R"(<joint name="{}" type="hinge" axis="0 1 0"/>)", hinge_name(i));
     s += inertial_element(b, {0.0, 0.0, 0.0});
-    s += geom_elements(b, i, {0.0, 0.0, 0.0}, identity);
+    s += geom_elements(b, plan, i, {0.0, 0.0, 0.0}, identity);
   } else {
     // pendulum: frame origin at the pivot; centre of mass at -pivot_in_body
     // in the reference pose (angle 0)
@@ -123,7 +108,7 @@ std::string moving_body(const Case& c, int i) {
     s += fmt::format(R"(<body name="{}" pos="{}">)", body_name(i), vec3(to_mj(rj.anchor_world_m)));
     s += fmt::format(R"(<joint name="{}" type="hinge" axis="0 1 0"/>)", hinge_name(i));
     s += inertial_element(b, com);
-    s += geom_elements(b, i, com, identity);
+    s += geom_elements(b, plan, i, com, identity);
   }
   s += "</body>\n";
   return s;
@@ -153,9 +138,6 @@ std::string pair_name(int k, int piece_a, int piece_b) {
   return piece_a == 0 && piece_b == 0 ? fmt::format("pair{}", k)
                                       : fmt::format("pair{}_{}_{}", k, piece_a, piece_b);
 }
-int geom_count(const Body& b) {
-  return piece_count(b);
-}
 std::string slide_x_name(int i) {
   return fmt::format("body{}_x", i);
 }
@@ -178,44 +160,48 @@ Vec2 pivot_in_body_m(const Case& c, const RevoluteJoint& j) {
   return rotated(j.anchor_world_m - b.position_m, -b.angle_rad);
 }
 
-std::string write_mjcf(const Case& c, const MjcfOptions& o) {
-  if (o.pairs.size() != c.contacts.size()) {
-    throw EngineError("mujoco: write_mjcf needs one PairParams per contact pair");
+std::string write_mjcf(const Case& c, const MujocoPlan& plan, const MjcfOptions& o) {
+  if (o.pairs.size() != c.contacts.size() || plan.pairs.size() != c.contacts.size() ||
+      plan.bodies.size() != c.bodies.size()) {
+    throw EngineError("mujoco: write_mjcf needs the case's plan and one PairParams per pair");
   }
   std::string assets;
   std::string world;
   for (std::size_t i = 0; i < c.bodies.size(); ++i) {
     const Body& b = c.bodies[i];
+    const BodyPlan& bp = plan.bodies[i];
     const int id = static_cast<int>(i);
-    if (const auto* p = std::get_if<Polygon>(&b.shape)) assets += mesh_assets(*p, id);
+    assets += mesh_assets(bp, id);
     if (b.fixed) {
       // fixed bodies are geoms of the world body at their pose
-      world += geom_elements(b, id, to_mj(b.position_m), quat_from_ccw(b.angle_rad)) + "\n";
+      world += geom_elements(b, bp, id, to_mj(b.position_m), quat_from_ccw(b.angle_rad)) + "\n";
     } else {
       if (std::holds_alternative<HalfPlane>(b.shape)) {
         throw EngineError(fmt::format("mujoco: half-plane '{}' must be fixed", b.name));
       }
-      world += moving_body(c, id);
+      world += moving_body(c, bp, id);
     }
   }
   std::string pairs;
   for (std::size_t k = 0; k < c.contacts.size(); ++k) {
     const ContactPair& cp = c.contacts[k];
-    const auto& a = c.bodies.at(static_cast<std::size_t>(cp.body_a));
-    const auto& b = c.bodies.at(static_cast<std::size_t>(cp.body_b));
+    const PairPlan& pp = plan.pairs[k];
     // two fixed bodies never move: MuJoCo has nothing to compute
-    if (a.fixed && b.fixed) continue;
+    if (!pp.present) continue;
     const PairParams& p = o.pairs[k];
+    // Coulomb friction on both tangents (the plan says why); none at condim 1
+    const std::string friction =
+        pp.condim > 1 ? fmt::format(R"( friction="{}")", reals(pp.friction.data(), 5)) : "";
     // every piece of a against every piece of b, with the case pair's parameters
-    const int na = piece_count(a);
-    const int nb = piece_count(b);
+    const int na = plan.bodies[static_cast<std::size_t>(cp.body_a)].geom_count();
+    const int nb = plan.bodies[static_cast<std::size_t>(cp.body_b)].geom_count();
     for (int pa = 0; pa < na; ++pa) {
       for (int pb = 0; pb < nb; ++pb) {
         pairs += fmt::format(
-            R"(<pair name="{}" geom1="{}" geom2="{}" condim="1" solref="{}" solimp="{}" margin="{}" gap="{}"/>)",
+            R"(<pair name="{}" geom1="{}" geom2="{}" condim="{}"{} solref="{}" solimp="{}" margin="{}" gap="{}"/>)",
             pair_name(static_cast<int>(k), pa, pb), geom_name(cp.body_a, pa),
-            geom_name(cp.body_b, pb), reals(p.solref.data(), 2), reals(p.solimp.data(), 5),
-            num(p.margin_m), num(p.gap_m));
+            geom_name(cp.body_b, pb), pp.condim, friction, reals(p.solref.data(), 2),
+            reals(p.solimp.data(), 5), num(pp.margin_m), num(p.gap_m));
         pairs += "\n";
       }
     }
@@ -224,7 +210,7 @@ std::string write_mjcf(const Case& c, const MjcfOptions& o) {
   return fmt::format(
       R"(<mujoco model="{}">
 <compiler angle="radian" inertiafromgeom="false"/>
-<option timestep="{}" integrator="{}" solver="{}" iterations="{}" tolerance="{}" gravity="{}"/>
+<option timestep="{}" integrator="{}" solver="{}" iterations="{}" tolerance="{}" gravity="{}" cone="{}" impratio="{}" noslip_iterations="{}"/>
 <asset>
 {}</asset>
 <worldbody>
@@ -234,7 +220,7 @@ std::string write_mjcf(const Case& c, const MjcfOptions& o) {
 </mujoco>
 )",
       "planarbench", num(o.dt_s), o.integrator, o.solver, o.iterations, num(o.tolerance), vec3(g),
-      assets, world, pairs);
+      o.cone, num(o.impratio), o.noslip_iterations, assets, world, pairs);
 }
 
 }  // namespace pb::internal::mujoco

@@ -1,23 +1,25 @@
 // MJCF text of a case: one MuJoCo body per moving case body, one geom per
 // body (one per convex piece of a non-convex polygon), one explicit <pair>
 // per case contact pair (per two pieces), everything else unable to collide.
-// Built from the pb::Case alone: no code path per case.
+// Written from the pb::Case and its MujocoPlan (mujoco_plan.hpp): no code
+// path per case, and no geometry decided here.
 #pragma once
 
 #include <array>
 #include <string>
 #include <vector>
 
+#include "mujoco_plan.hpp"
 #include "planarbench/case.hpp"
 
 namespace pb::internal::mujoco {
 
-// MuJoCo parameters of one case contact pair
+// MuJoCo's solver parameters of one case contact pair (the geometry, condim
+// and friction are the plan's)
 struct PairParams {
   std::array<double, 2> solref = {0.02, 1.0};  // MuJoCo's default; direct form (-k, -b) when < 0
   std::array<double, 5> solimp = {0.9, 0.95, 0.001, 0.5, 2.0};
-  double margin_m = 0.0;  // m, distance below which MuJoCo reports the pair
-  double gap_m = 0.0;     // m, contacts with distance >= margin - gap are inactive
+  double gap_m = 0.0;  // m, contacts with distance >= margin - gap are inactive
 };
 
 struct MjcfOptions {
@@ -26,6 +28,11 @@ struct MjcfOptions {
   std::string solver = "Newton";
   int iterations = 100;
   double tolerance = 1e-8;
+  // friction cone (mjOption::cone), impratio and noslip_iterations: MuJoCo's
+  // defaults, which leave a frictionless (condim 1) model as it was
+  std::string cone = "pyramidal";
+  double impratio = 1.0;
+  int noslip_iterations = 0;
   std::vector<PairParams> pairs;  // index = Case::contacts index
 };
 
@@ -36,8 +43,6 @@ struct MjcfOptions {
 [[nodiscard]] std::string geom_name(int i, int piece = 0);
 [[nodiscard]] std::string mesh_name(int i, int piece = 0);
 [[nodiscard]] std::string pair_name(int k, int piece_a = 0, int piece_b = 0);
-// geoms of a case body: its convex pieces (polygon_pieces), else 1
-[[nodiscard]] int geom_count(const Body& b);
 [[nodiscard]] std::string slide_x_name(int i);
 [[nodiscard]] std::string slide_z_name(int i);
 [[nodiscard]] std::string hinge_name(int i);
@@ -57,6 +62,7 @@ struct MjcfOptions {
 // initial angle and velocities are set on qpos/qvel after loading
 // (initial_state below), so that joint coordinates start at known values.
 // Throws EngineError for shapes or joints MuJoCo cannot take (see supports()).
-[[nodiscard]] std::string write_mjcf(const Case& c, const MjcfOptions& options);
+[[nodiscard]] std::string write_mjcf(const Case& c, const MujocoPlan& plan,
+                                     const MjcfOptions& options);
 
 }  // namespace pb::internal::mujoco

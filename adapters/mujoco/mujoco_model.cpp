@@ -62,13 +62,13 @@ bool ModelLayout::on_body_a(int geom, int k) const {
          pairs.at(static_cast<std::size_t>(k)).body_a;
 }
 
-ModelLayout model_layout(const mjModel* m, const Case& c) {
+ModelLayout model_layout(const mjModel* m, const Case& c, const MujocoPlan& plan) {
   ModelLayout L;
   L.body_of_geom.assign(static_cast<std::size_t>(m->ngeom), -1);
   for (std::size_t i = 0; i < c.bodies.size(); ++i) {
     const int id = static_cast<int>(i);
     BodyLayout b;
-    for (int piece = 0; piece < geom_count(c.bodies[i]); ++piece) {
+    for (int piece = 0; piece < plan.bodies[i].geom_count(); ++piece) {
       const int g = id_of(m, mjOBJ_GEOM, geom_name(id, piece));
       if (g < 0) continue;
       b.geoms.push_back(g);

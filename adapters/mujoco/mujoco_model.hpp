@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "mujoco_plan.hpp"
 #include "planarbench/case.hpp"
 
 namespace pb::internal::mujoco {
@@ -62,8 +63,8 @@ struct ModelLayout {
   [[nodiscard]] bool on_body_a(int geom, int k) const;
 };
 
-// Looks the names written by write_mjcf up in the compiled model.
-[[nodiscard]] ModelLayout model_layout(const mjModel* m, const Case& c);
+// Looks the names written by write_mjcf (from `plan`) up in the compiled model.
+[[nodiscard]] ModelLayout model_layout(const mjModel* m, const Case& c, const MujocoPlan& plan);
 
 // qpos, qvel of the case's initial state: slides at 0 (the body starts at its
 // reference position), hinges at hinge_from_ccw(angle), velocities mapped.

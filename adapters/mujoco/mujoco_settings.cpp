@@ -19,6 +19,15 @@ SettingsBinder bind_mujoco_settings(MujocoSettings& s) {
                "constraint solver iterations (default 100, MuJoCo's default)")
       .real("tolerance", &s.tolerance, 0.0, 1.0,
             "constraint solver tolerance, in [0, 1] (default 1e-8, MuJoCo's default)")
+      .choice("cone", &s.cone, {"pyramidal", "elliptic"},
+              "friction cone of pairs with friction (mjOption::cone; default pyramidal, "
+              "MuJoCo's default)")
+      .real("impratio", &s.impratio, 1e-6, 1e6,
+            "ratio of frictional to normal constraint impedance (mjOption::impratio), in "
+            "[1e-6, 1e6] (default 1, MuJoCo's default)")
+      .integer("noslip_iterations", &s.noslip_iterations, 0, 100000,
+               "noslip solver iterations after the main solve (mjOption::noslip_iterations; "
+               "default 0: off, MuJoCo's default)")
       .reals("solimp", &s.solimp, 5,
              "contact impedance (dmin, dmax, width m, midpoint, power); d in [0.0001, 0.9999] "
              "(default [0.9999, 0.9999, 0.001, 0.5, 2]: near the clamp, the spring-damper is "

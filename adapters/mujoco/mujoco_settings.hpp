@@ -20,6 +20,13 @@ struct MujocoSettings {
   // mjOption::iterations and ::tolerance (MuJoCo's defaults 100 and 1e-8)
   int iterations = 100;
   double tolerance = 1e-8;
+  // friction (pairs with friction > 0, condim 3): the friction cone
+  // ("pyramidal", MuJoCo's default, or "elliptic"), the ratio of frictional to
+  // normal impedance (MuJoCo's default 1) and the noslip solver's iterations
+  // (default 0: off), as MuJoCo's users set them in <option>
+  std::string cone = "pyramidal";
+  double impratio = 1.0;
+  int noslip_iterations = 0;
   // solimp (dmin, dmax, width m, midpoint, power): impedance d near its clamp
   // 0.9999 makes the constraint follow the reference acceleration -b v - k r,
   // i.e. the spring-damper (ENGINES.md)

@@ -50,6 +50,9 @@ std::string unsupported_reason(const Case& c) {
 Capability mujoco_capability(const Case& c, const std::string& mode) {
   const bool inject = mode == "inject";
   if (auto r = unsupported_reason(c); !r.empty()) return {Support::unsupported, r};
+  if (inject) {
+    if (auto r = inject_friction_reason(c); !r.empty()) return {Support::unsupported, r};
+  }
   std::string reasons;
   auto add = [&](const std::string& r) {
     if (reasons.find(r) != std::string::npos) return;
@@ -75,6 +78,10 @@ Capability mujoco_capability(const Case& c, const std::string& mode) {
     if (inject) continue;
     add("the law as a soft constraint near d = 1: gravity's share of the contact load is "
         "scaled by 1 - d (resting penetration ~0 instead of m g / k)");
+    if (cp.has_friction()) {
+      add("Coulomb friction as MuJoCo's soft frictional contact (condim 3): a load inside the "
+          "cone is held by a slow creep");
+    }
     const auto* kv = std::get_if<KelvinVoigt>(&cp.law);
     if (mode == "oracle") {
       if (kv && kv->damping_depth_m > 0.0) add("damping ramp replaced by a linear equivalent");

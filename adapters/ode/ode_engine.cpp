@@ -27,6 +27,7 @@
 #include "ode_frame.hpp"
 #include "ode_geometry.hpp"
 #include "ode_library.hpp"
+#include "ode_friction.hpp"
 #include "ode_pair_contact.hpp"
 #include "ode_probe.hpp"
 #include "ode_settings.hpp"
@@ -146,7 +147,7 @@ class OdeEngine final : public Engine {
   }
   [[nodiscard]] long steps() const override { return steps_; }
   [[nodiscard]] nlohmann::json mapping() const override;
-  [[nodiscard]] nlohmann::json extra_attributes() const override { return extra_; }
+  [[nodiscard]] nlohmann::json extra_attributes() const override;
   [[nodiscard]] Physics physics() const override;
   [[nodiscard]] long steps_before_start() const override { return probe_steps_; }
 
@@ -192,6 +193,10 @@ class OdeEngine final : public Engine {
   std::string diverged_;  // non-empty once a body blew up
   nlohmann::json mapping_ = nlohmann::json::object();
   nlohmann::json extra_ = nlohmann::json::object();
+  // ODE's non-fatal messages during this run's steps (ode_library.hpp)
+  long messages_seen_ = 0;
+  long messages_mark_ = 0;  // the thread's count when last looked at
+  std::string first_message_;
 };
 
 Capability OdeEngine::supports(const Case& c) const {
@@ -207,7 +212,10 @@ Capability OdeEngine::supports(const Case& c) const {
               fmt::format("body '{}' moves but has no positive mass and inertia", b.name)};
     }
   }
-  if (settings_.mode == "inject") return {Support::native, ""};
+  if (settings_.mode == "inject") {
+    if (auto why = inject_friction_reason(c); !why.empty()) return {Support::unsupported, why};
+    return {Support::native, ""};
+  }
   std::string mapped;
   auto add = [&](const std::string& why) {
     mapped += (mapped.empty() ? "" : "; ") + why;
@@ -292,6 +300,8 @@ void OdeEngine::build(const Case& c, const SettingsOverrides& overrides) {
   tracker_ = EpisodeTracker{};
   world_.reset();
   collider_.reset();
+  messages_seen_ = 0;
+  first_message_.clear();
 
   // every ODE step this build takes (a trace, not the probe's own count)
   const long steps_at_start = internal::ode::world_steps_on_this_thread();
@@ -465,10 +475,11 @@ void OdeEngine::map_contacts_oracle(const std::vector<FirstTouch>& touches) {
     {
       soft_[p] = internal::ode::soft_contact(lin.stiffness_n_per_m, lin.damping_ns_per_m, step_s_,
                                              corrected);
-      jp["expressed_as"] =
+      jp["expressed_as"] = fmt::format(
           "ODE contact joint, one per pair (the deepest of dCollide's contacts), mode = "
-          "dContactSoftERP | dContactSoftCFM, mu = 0 (frictionless), no dContactBounce; the "
-          "contact row's lambda >= 0 is the clamp F >= 0";
+          "dContactSoftERP | dContactSoftCFM, {}, no dContactBounce; the "
+          "contact row's lambda >= 0 is the clamp F >= 0",
+          pair.has_friction() ? "mu: Coulomb (friction)" : "mu = 0 (frictionless)");
       jp["linear_law"] = {{"stiffness_n_per_m", lin.stiffness_n_per_m},
                           {"damping_ns_per_m", lin.damping_ns_per_m},
                           {"exact", lin.exact},
@@ -487,6 +498,7 @@ void OdeEngine::map_contacts_oracle(const std::vector<FirstTouch>& touches) {
                             {"note", soft_[p].note}};
       jp["not_expressed"] = not_expressed_native(pair.law);
     }
+    if (pair.has_friction()) jp["friction"] = internal::ode::friction_mapping(pair.friction);
     pairs.push_back(jp);
   }
 
@@ -542,10 +554,11 @@ void OdeEngine::map_contacts_native() {
       jp["not_expressed"] = nlohmann::json::array(
           {"the force is explicit over each step (semi-implicit Euler of ODE's integrator)"});
     } else {
-      jp["expressed_as"] =
+      jp["expressed_as"] = fmt::format(
           "every contact dCollide reports for the pair (every convex piece of either body) is an "
-          "ODE contact joint, mode = dContactSoftERP | dContactSoftCFM, mu = 0 (frictionless), no "
-          "dContactBounce; the row's lambda >= 0 is the clamp F >= 0";
+          "ODE contact joint, mode = dContactSoftERP | dContactSoftCFM, {}, no "
+          "dContactBounce; the row's lambda >= 0 is the clamp F >= 0",
+          pair.has_friction() ? "mu: Coulomb (friction)" : "mu = 0 (frictionless)");
       jp["law_per_step"] = fmt::format(
           "each step, in the near callback's pass: delta = the deepest contact's depth, "
           "(k, c) = the law at delta as a linear spring-damper ({}); contact i (depth d_i) gets "
@@ -596,6 +609,7 @@ void OdeEngine::map_contacts_native() {
         // nothing more to say
       }
       jp["not_expressed"] = lost;
+      if (pair.has_friction()) jp["friction"] = internal::ode::friction_mapping(pair.friction);
     }
     pairs.push_back(jp);
   }
@@ -631,6 +645,18 @@ void OdeEngine::add_common_mapping() {
       "with several contacts, their depth-weighted centroid";
 }
 
+nlohmann::json OdeEngine::extra_attributes() const {
+  nlohmann::json x = extra_;
+  if (messages_seen_ > 0) {
+    x["ode_messages_noted"] = {
+        {"count", messages_seen_},
+        {"example", first_message_},
+        {"note", "ODE's non-fatal dMessage calls during the run's steps, counted instead of "
+                 "printed"}};
+  }
+  return x;
+}
+
 nlohmann::json OdeEngine::mapping() const {
   nlohmann::json m = mapping_;
   if (!oracle_ && !inject_ && m.is_object()) {
@@ -649,7 +675,13 @@ void OdeEngine::advance_to(double t_s) {
   if (!world_) throw EngineError("ode: advance_to before build");
   internal::ode::ensure_ode_ready_in_this_thread();
   const auto target = static_cast<long>(std::floor(t_s / step_s_ + 1e-9));
+  messages_mark_ = internal::ode::ode_messages_on_this_thread().count;
   while (steps_ < target && diverged_.empty()) step_once();
+  const internal::ode::OdeMessages& said = internal::ode::ode_messages_on_this_thread();
+  if (said.count > messages_mark_) {
+    if (messages_seen_ == 0) first_message_ = said.last;
+    messages_seen_ += said.count - messages_mark_;
+  }
   if (!diverged_.empty()) throw EngineError(diverged_);
 }
 
@@ -719,6 +751,7 @@ void OdeEngine::add_native_joints(std::size_t p) {
     contact.surface.soft_erp = row.erp;
     contact.surface.soft_cfm = row.cfm;
     contact.geom = g;
+    internal::ode::add_coulomb_friction(contact, case_.contacts[p].friction);
     const dJointID j = dJointCreateContact(world_->world(), world_->contact_group(), &contact);
     dJointAttach(j, dGeomGetBody(g.g1), dGeomGetBody(g.g2));
     auto& n = joints_made_[p];
@@ -737,6 +770,7 @@ void OdeEngine::add_oracle_joint(std::size_t p) {
   contact.surface.soft_erp = soft_[p].erp;
   contact.surface.soft_cfm = soft_[p].cfm;
   contact.geom = g;
+  internal::ode::add_coulomb_friction(contact, case_.contacts[p].friction);
   const dJointID j = dJointCreateContact(world_->world(), world_->contact_group(), &contact);
   dJointAttach(j, dGeomGetBody(g.g1), dGeomGetBody(g.g2));
   dJointSetFeedback(j, &feedback_[p * feedback_per_pair_]);

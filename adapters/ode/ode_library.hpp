@@ -19,6 +19,16 @@ void ensure_ode_ready_in_this_thread();
 // do not interleave their draws and each run stays reproducible.
 [[nodiscard]] std::mutex& quickstep_random_lock();
 
+// ODE's non-fatal messages (dMessage: e.g. "LCP internal error, s <= 0"),
+// which ODE prints to stderr by default: the adapter's handler counts them
+// per thread instead, with the first one's text, so that a run can record
+// what ODE said during it (installed by ensure_ode_ready_in_this_thread)
+struct OdeMessages {
+  long count = 0;
+  std::string last;  // "ODE message <num>: <text>" of the latest one on this thread
+};
+[[nodiscard]] const OdeMessages& ode_messages_on_this_thread();
+
 // dODE_VERSION from <ode/version.h> (the headers compiled against)
 [[nodiscard]] std::string ode_header_version();
 // ODE_VERSION of pkg-config at build time (compile definition)

@@ -30,6 +30,23 @@ Vec2 point_velocity(dBodyID b, const Vec2& p) {
   return {v[0], v[1]};
 }
 
+// Whether contact c lies (in the plane) where one already kept does: a prism
+// reports each vertex on both faces, z = +w and z = -w. With friction only one
+// of them is kept: their friction rows would be the same row twice, hard (no
+// soft CFM), which makes dWorldStep's LCP singular (measured on block_hold:
+// "LCP internal error, s <= 0" at 1784 steps, and a creep of 1.8e-5 m/s).
+// The normal law is spread over the contacts kept, so the pair's force is the
+// same. 1e-9 m: far below a prism's smallest edge, far above rounding.
+bool in_plane_duplicate(const PairContact& out, const dContactGeom& c) {
+  for (int k = 0; k < out.count; ++k) {
+    const dContactGeom& d = out.geoms[static_cast<std::size_t>(k)];
+    if (std::abs(d.pos[0] - c.pos[0]) <= 1e-9 && std::abs(d.pos[1] - c.pos[1]) <= 1e-9) {
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 Vec2 contact_midpoint(const dContactGeom& g) {
@@ -113,6 +130,7 @@ void PairCollider::collide_geoms(int pair, dGeomID g, dGeomID h, PairContact& ou
     if (!(len > 0.0)) continue;  // a normal along z: not a planar contact
     c.normal[0] /= len;
     c.normal[1] /= len;
+    if (cp.has_friction() && in_plane_duplicate(out, c)) continue;
     out.geoms[static_cast<std::size_t>(out.count++)] = c;
   }
 }

@@ -127,6 +127,20 @@ BodyOnLine::BodyOnLine(const Case& c, int body, int line, int pair)
   along_accel_mps2_ = c.gravity_mps2.dot(tangent_);
   angle0_rad_ = d.angle_rad;
   spin_radps_ = d.angular_velocity_radps;
+  if (cp.has_friction()) {
+    TangentialParams tp;
+    tp.mass_kg = d.mass_kg;
+    tp.inertia_kgm2 = d.inertia_kgm2;
+    tp.rotates = std::holds_alternative<Circle>(d.shape);
+    tp.radius_m = tp.rotates ? support_.support_m : 0.0;
+    tp.friction = cp.friction;
+    tp.tangential_gravity_mps2 = along_accel_mps2_;
+    tp.along0_m = along0_m_;
+    tp.along_rate0_mps = along_rate0_mps_;
+    tp.angle0_rad = angle0_rad_;
+    tp.spin0_radps = spin_radps_;
+    tangential_ = std::make_unique<TangentialMotion>(tp, normal_);
+  }
   for (const Body& b : c.bodies) {
     BodyState s;
     s.position_m = b.position_m;
@@ -141,6 +155,7 @@ BodyOnLine::BodyOnLine(const Case& c, int body, int line, int pair)
 
 void BodyOnLine::extend_to(double t_s) {
   normal_.extend_to(t_s);
+  if (tangential_) tangential_->extend_to(t_s);
   if (!std::isfinite(support_.clearance_m)) return;
   // a polygon: no other vertex level may reach the line
   const auto& phases = normal_.phases();
@@ -160,10 +175,19 @@ void BodyOnLine::extend_to(double t_s) {
 void BodyOnLine::body_states(double t_s, std::vector<BodyState>& out) const {
   out = initial_;
   const NormalState ns = normal_.state_at(t_s);
+  BodyState& s = out[static_cast<std::size_t>(body_)];
+  if (tangential_) {
+    const TangentialState ts = tangential_->state_at(t_s);
+    s.position_m =
+        line_origin_m_ + ts.along_m * tangent_ + (ns.gap_m + support_.support_m) * normal_dir_;
+    s.velocity_mps = ts.along_rate_mps * tangent_ + ns.gap_rate_mps * normal_dir_;
+    s.angle_rad = ts.angle_rad;
+    s.angular_velocity_radps = ts.spin_radps;
+    return;
+  }
   // uniform acceleration along the line, constant spin
   const double along = along0_m_ + t_s * (along_rate0_mps_ + 0.5 * along_accel_mps2_ * t_s);
   const double along_rate = along_rate0_mps_ + along_accel_mps2_ * t_s;
-  BodyState& s = out[static_cast<std::size_t>(body_)];
   s.position_m = line_origin_m_ + along * tangent_ + (ns.gap_m + support_.support_m) * normal_dir_;
   s.velocity_mps = along_rate * tangent_ + ns.gap_rate_mps * normal_dir_;
   s.angle_rad = angle0_rad_ + spin_radps_ * t_s;
@@ -174,7 +198,8 @@ void BodyOnLine::contacts(double t_s, std::vector<ContactSample>& out) const {
   out.clear();
   const NormalState ns = normal_.state_at(t_s);
   if (!(ns.gap_m < 0.0)) return;
-  const double along = along0_m_ + t_s * (along_rate0_mps_ + 0.5 * along_accel_mps2_ * t_s);
+  const double along = tangential_ ? tangential_->state_at(t_s).along_m
+                                   : along0_m_ + t_s * (along_rate0_mps_ + 0.5 * along_accel_mps2_ * t_s);
   const Vec2 centre = line_origin_m_ + along * tangent_ + (ns.gap_m + support_.support_m) * normal_dir_;
   ContactSample cs;
   cs.body_a = pair_body_a_;
@@ -198,7 +223,8 @@ std::vector<ContactEpisode> BodyOnLine::episodes(double now_s) const {
 }
 
 long BodyOnLine::phases_begun(double t_s) const {
-  return static_cast<long>(normal_.phase_index_at(t_s)) + 1;
+  return static_cast<long>(normal_.phase_index_at(t_s)) + 1 +
+         (tangential_ ? tangential_->phases_begun(t_s) : 0);
 }
 
 nlohmann::json BodyOnLine::mapping() const {
@@ -240,6 +266,20 @@ nlohmann::json BodyOnLine::mapping() const {
       "peak force and penetration at closed-form stationary points; impulse from the normal "
       "momentum balance m du' - m (g.n) dt; a contact begun at rest has restitution NaN";
   j["not_expressed"] = nlohmann::json::array();
+  if (tangential_) {
+    j["description"] =
+        "body on a fixed line with Coulomb friction (SPEC §7), the normal force through its "
+        "centre of mass: normal gap piecewise free flight / damped linear oscillator "
+        "(Kelvin-Voigt, paper eq. 1) / free flight while the clamped force is zero; along the "
+        "line and in rotation the stick / slip motion of `friction` under that normal force";
+    j["friction"] = tangential_->mapping();
+    if (std::isfinite(support_.clearance_m)) {
+      j["not_expressed"].push_back(
+          "the block is held not to turn: the moment of the friction force about its centre "
+          "(the force acts support_m below it), which tilts a compliant block slightly, is left "
+          "out");
+    }
+  }
   return j;
 }
 

@@ -1,22 +1,26 @@
-// The closed-form truth of a frictionless body on a fixed line (the cases
-// falling_ball, sliding, square_landing, concave_arch, incline_launch; SPEC
-// §2-§3): in the frame of the line (tangent t, outward normal n of the
-// half-plane) the tangential motion is uniform acceleration g . t for all
-// time, the rotation keeps its initial rate, and the normal motion is a
-// NormalContactMotion. This holds when the normal force passes through the
-// centre of mass (there is no friction): for a disk always; for a polygon
-// that does not turn and touches the line with a face (or one vertex) whose
-// depth-weighted contact point (SPEC §1: equal depths, the face's middle)
-// lies on the normal through its centre of mass, while no other vertex
-// reaches the line.
+// The closed-form truth of a body on a fixed line (the cases falling_ball,
+// sliding, square_landing, concave_arch, incline_launch; SPEC §2-§3): in the
+// frame of the line (tangent t, outward normal n of the half-plane) the normal
+// motion is a NormalContactMotion; without friction the tangential motion is
+// uniform acceleration g . t for all time and the rotation keeps its initial
+// rate; with friction (SPEC §7) both follow a TangentialMotion. This holds
+// when the normal force passes through the centre of mass: for a disk always;
+// for a polygon that does not turn and touches the line with a face (or one
+// vertex) whose depth-weighted contact point (SPEC §1: equal depths, the
+// face's middle) lies on the normal through its centre of mass, while no
+// other vertex reaches the line. With friction a polygon (a block) is held
+// not to turn: the friction's moment about its centre, which tilts a
+// compliant block slightly, is left out (the mapping says so).
 #pragma once
 
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "normal_contact_motion.hpp"
+#include "tangential_motion.hpp"
 #include "planarbench/case.hpp"
 #include "planarbench/engine.hpp"
 
@@ -60,6 +64,8 @@ class BodyOnLine {
   [[nodiscard]] nlohmann::json mapping() const;
 
   [[nodiscard]] const NormalContactMotion& normal_motion() const { return normal_; }
+  // with friction: the motion along the line (nullptr without)
+  [[nodiscard]] const TangentialMotion* tangential_motion() const { return tangential_.get(); }
 
  private:
   static NormalContactParams normal_params(const Case& c, int body, int line, int pair,
@@ -82,6 +88,7 @@ class BodyOnLine {
   bool gap_snapped_ = false;        // the initial gap was rounding of zero
   std::vector<BodyState> initial_;  // every body at t = 0
   NormalContactMotion normal_;
+  std::unique_ptr<TangentialMotion> tangential_;  // with friction only
 };
 
 }  // namespace pb::internal

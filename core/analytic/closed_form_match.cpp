@@ -68,6 +68,9 @@ ClosedFormMatch match_two_disks(const Case& c, const std::vector<int>& moving) {
                             c.bodies.size()));
   }
   if (auto why = plain_kelvin_voigt_reason(c); !why.empty()) return none(why);
+  if (c.contacts[0].has_friction()) {
+    return none("two moving bodies with friction: the head-on closed form is frictionless");
+  }
   const Vec2 dx = b.position_m - a.position_m;
   const Vec2 dv = b.velocity_mps - a.velocity_mps;
   // head on: the relative velocity along the line of centres (cross product

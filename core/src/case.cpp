@@ -58,4 +58,19 @@ int Case::output_samples() const {
 
 double Case::output_time(int k) const { return static_cast<double>(k) * output_interval_s; }
 
+const ContactPair* Case::first_pair_with_friction() const {
+  for (const ContactPair& p : contacts) {
+    if (p.has_friction()) return &p;
+  }
+  return nullptr;
+}
+
+std::string inject_friction_reason(const Case& c) {
+  const ContactPair* p = c.first_pair_with_friction();
+  if (p == nullptr) return {};
+  return "pair '" + p->name +
+         "' has friction: mode inject applies the case's normal law as a force and has no "
+         "Coulomb friction (use the engine's native mode)";
+}
+
 }  // namespace pb

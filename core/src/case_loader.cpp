@@ -37,6 +37,10 @@ constexpr int kMaxPolygonPoints = 10000;        // the self-intersection check i
 constexpr double kMaxSize_m = 1e4;              // m, radius, semi-axis, extent
 constexpr double kMaxCoordinate_m = 1e6;        // m, positions, anchors, polygon points
 constexpr double kMaxThreshold_m = 1e-3;        // m, contact distance threshold
+// Coulomb coefficient: measured pairs lie in [0, ~1.5] (rubber on concrete
+// ~1, clean metals up to ~1.5); 10 keeps room for tests and rejects a slipped
+// digit (friction = 50 meant 0.5)
+constexpr double kMaxFriction = 10.0;
 // bytes of a case file: ten 10000-point polygons at ~45 bytes a point are 4.5 MB
 constexpr std::uintmax_t kMaxCaseFileBytes = 8u << 20;  // 8 MiB
 
@@ -58,13 +62,14 @@ const std::vector<std::string> kLaws = {"kelvin_voigt", "hertz", "lankarani_nikr
 const std::vector<std::string> kContactKeys = {
     "name",          "bodies",    "law",      "stiffness",   "damping",
     "damping_depth", "threshold", "exponent", "restitution", "young_modulus",
-    "poisson_ratio", "radius"};
+    "poisson_ratio", "radius",    "friction"};
 const std::vector<std::string> kKelvinVoigtKeys = {"name",      "bodies",  "law",
                                                    "stiffness", "damping", "damping_depth",
-                                                   "threshold"};
+                                                   "threshold", "friction"};
 const std::vector<std::string> kHertzKeys = {"name",      "bodies",   "law",
                                              "stiffness", "exponent", "threshold",
-                                             "young_modulus", "poisson_ratio", "radius"};
+                                             "young_modulus", "poisson_ratio", "radius",
+                                             "friction"};
 const std::vector<std::string> kMaterialKeys = {"young_modulus", "poisson_ratio", "radius"};
 
 std::vector<std::string> with(std::vector<std::string> keys, const std::string& extra) {
@@ -368,6 +373,7 @@ ContactPair read_contact(const TableReader& t, const Case& c) {
   // the force law
   const std::string law = t.word("law", kLaws);
   p.threshold_m = t.real_or("threshold", 1e-10, Range::non_negative(kMaxThreshold_m), "m");
+  p.friction = t.real_or("friction", 0.0, Range::non_negative(kMaxFriction));
   if (law == "kelvin_voigt") {
     t.only_keys(kKelvinVoigtKeys, "of a kelvin_voigt contact");
     KelvinVoigt kv;

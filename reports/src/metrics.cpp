@@ -1,5 +1,7 @@
 #include "planarbench/reports/metrics.hpp"
 
+#include "friction_metrics.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -48,17 +50,7 @@ const BodyTrajectory* find_body(const RunResult& r, const std::string& name) {
 MetricValue metric(const Case& c, const RunResult& run, const std::string& against,
                    const std::string& name, double actual, double desired, bool relative,
                    const std::string& unit) {
-  MetricValue m;
-  m.case_name = c.name;
-  m.engine = run.engine_name;
-  m.against = against;
-  m.metric = name;
-  m.actual = actual;
-  m.desired = desired;
-  m.error = relative ? std::abs(actual - desired) / std::abs(desired) : std::abs(actual - desired);
-  m.unit = relative ? "1" : unit;
-  m.value_unit = unit;
-  return m;
+  return metric_value(c, run, against, name, actual, desired, relative, unit);
 }
 
 // trajectory metrics over every body the baseline has
@@ -173,6 +165,22 @@ void episode_metrics(const Case& c, const RunResult& run, const RunResult& base,
 }
 
 }  // namespace
+
+MetricValue metric_value(const Case& c, const RunResult& run, const std::string& against,
+                         const std::string& name, double actual, double desired, bool relative,
+                         const std::string& unit) {
+  MetricValue m;
+  m.case_name = c.name;
+  m.engine = run.engine_name;
+  m.against = against;
+  m.metric = name;
+  m.actual = actual;
+  m.desired = desired;
+  m.error = relative ? std::abs(actual - desired) / std::abs(desired) : std::abs(actual - desired);
+  m.unit = relative ? "1" : unit;
+  m.value_unit = unit;
+  return m;
+}
 
 std::vector<MetricValue> compare_runs(const Case& c, const RunResult& run,
                                       const RunResult& baseline, const std::string& against,
@@ -333,6 +341,7 @@ std::vector<MetricValue> case_metrics(const Case& c, const CaseRuns& runs) {
   for (const auto& r : runs.runs) {
     if (r.engine_name == "analytic") continue;
     if (truth != nullptr) append(compare_runs(c, r, *truth, "truth", valid_until));
+    if (truth != nullptr && r.status == RunStatus::ok) append(friction_metrics(c, r, *truth));
     if (reference != nullptr && &r != reference) {
       append(compare_runs(c, r, *reference, "reference", kInf));
     }

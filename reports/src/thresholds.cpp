@@ -11,17 +11,22 @@
 
 #include "planarbench/did_you_mean.hpp"
 #include "planarbench/errors.hpp"
+#include "friction_metrics.hpp"
 
 namespace pb {
 
 namespace {
 
 const std::set<std::string>& metric_names() {
-  static const std::set<std::string> names = {
+  static const std::set<std::string> names = [] {
+    std::set<std::string> n = {
       "position_max", "position_rms",    "angle_max",       "velocity_max",    "velocity_rms",
       "impact_time",  "contact_duration", "peak_force",     "impulse",         "restitution",
       "max_penetration", "energy_drift", "constraint_drift", "momentum_drift", "wall_per_sim_s",
       "episode_count"};
+    for (const char* f : friction_metric_names()) n.insert(f);  // SPEC §7
+    return n;
+  }();
   return names;
 }
 

@@ -258,10 +258,12 @@ TEST(ResolveCases, AllGivesEveryCaseFileSorted) {
   const auto paths = resolve_cases("all", kCasesDir);
   std::vector<std::string> names;
   for (const auto& p : paths) names.push_back(p.stem().string());
-  EXPECT_EQ(names, (std::vector<std::string>{"concave_arch", "dual_pendulum", "ellipse_incline",
-                                             "falling_ball", "falling_ball_paper", "head_on",
-                                             "incline_launch", "pendulum_wall", "sliding",
-                                             "sliding_paper", "square_landing"}));
+  EXPECT_EQ(names, (std::vector<std::string>{
+                       "block_hold", "block_slide", "block_stop", "concave_arch", "disk_backspin",
+                       "disk_oblique_roll", "disk_oblique_slide", "disk_roll", "disk_slip",
+                       "disk_throw", "dual_pendulum", "ellipse_incline", "falling_ball",
+                       "falling_ball_paper", "head_on", "incline_launch", "pendulum_wall",
+                       "sliding", "sliding_friction", "sliding_paper", "square_landing"}));
 }
 
 // tests/data/cases/dir holds two cases and one TOML file without [case]
@@ -286,9 +288,11 @@ TEST(ResolveCases, UnknownNameListsTheCases) {
   } catch (const InputError& e) {
     const std::string msg = e.what();
     EXPECT_EQ(e.field(), "slidng");
-    EXPECT_NE(msg.find("concave_arch, dual_pendulum, ellipse_incline, falling_ball, falling_ball_paper, "
-                     "head_on, incline_launch, pendulum_wall, sliding, sliding_paper, "
-                     "square_landing"),
+    EXPECT_NE(msg.find("block_hold, block_slide, block_stop, concave_arch, disk_backspin, "
+                       "disk_oblique_roll, disk_oblique_slide, disk_roll, disk_slip, disk_throw, "
+                       "dual_pendulum, ellipse_incline, falling_ball, falling_ball_paper, "
+                       "head_on, incline_launch, pendulum_wall, sliding, sliding_friction, "
+                       "sliding_paper, square_landing"),
               std::string::npos)
         << msg;
     EXPECT_NE(msg.find("did you mean 'sliding'?"), std::string::npos) << msg;

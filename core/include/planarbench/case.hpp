@@ -120,6 +120,11 @@ struct ContactPair {
   int body_b = -1;          // index into Case::bodies
   ContactLaw law;
   double threshold_m = 1e-10;  // m, distance counted as contact (paper: 1e-10)
+  // Coulomb coefficient of the pair (SPEC §7), dimensionless, >= 0: the
+  // tangential force is bounded by friction x the normal force; one
+  // coefficient, no static / kinetic split. 0 = frictionless (the paper's law).
+  double friction = 0.0;
+  [[nodiscard]] bool has_friction() const { return friction > 0.0; }
 };
 
 // ---- truth ------------------------------------------------------------------
@@ -157,8 +162,16 @@ struct Case {
   std::vector<std::pair<std::string, std::string>> settings;
 
   [[nodiscard]] int body_index(const std::string& body_name) const;  // -1 if absent
+  // the first contact pair with friction > 0, or nullptr (a frictionless case)
+  [[nodiscard]] const ContactPair* first_pair_with_friction() const;
   [[nodiscard]] int output_samples() const;  // number of grid points, t = 0 included
   [[nodiscard]] double output_time(int k) const;  // t_k = k * output_interval_s
 };
+
+// Why an adapter's force-injection mode cannot run a case with friction, ""
+// for a frictionless case: `inject` applies the case's normal law as an
+// external force at the engine's contact geometry, and Coulomb friction is a
+// constraint (stick) that no applied force of the previous step expresses.
+[[nodiscard]] std::string inject_friction_reason(const Case& c);
 
 }  // namespace pb

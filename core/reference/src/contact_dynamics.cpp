@@ -56,10 +56,21 @@ double depth_inside(const Shape& shape, const Vec2& p) {
   return inside ? nearest : -nearest;
 }
 
+bool any_friction(const std::vector<ContactPair>& pairs) {
+  for (const ContactPair& p : pairs) {
+    if (p.has_friction()) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 ContactDynamics::ContactDynamics(const Case& c, GeometryMode mode, DetectionMode detection)
-    : model_(c), pairs_(c.contacts), mode_(mode) {
+    : model_(c),
+      pairs_(c.contacts),
+      mode_(mode),
+      has_friction_(any_friction(c.contacts)),
+      stick_(model_.coordinates(), static_cast<int>(c.contacts.size())) {
   const int nb = static_cast<int>(c.bodies.size());
   for (const auto& p : pairs_) {
     if (p.body_a < 0 || p.body_a >= nb || p.body_b < 0 || p.body_b >= nb || p.body_a == p.body_b) {
@@ -81,6 +92,10 @@ ContactDynamics::ContactDynamics(const Case& c, GeometryMode mode, DetectionMode
   q_.setZero(coordinates());
   u_.setZero(coordinates());
   gen_force_.setZero(coordinates());
+  u_dot_.setZero(coordinates());
+  stick_rows_.reserve(pairs_.size());
+  stick_pairs_.reserve(pairs_.size());
+  stick_force_n_.reserve(pairs_.size());
 }
 
 void ContactDynamics::initial_state(Eigen::VectorXd& y) const {
@@ -103,7 +118,66 @@ PairEvaluation ContactDynamics::evaluate(int k, const PairMode& mode) {
   e.unclamped_force_n = unclamped_force_n(p.law, -e.geometry.gap_m, -e.gap_rate_mps,
                                           mode.approach_speed_mps);
   e.force_n = mode.phase == ContactPhase::pressing ? e.unclamped_force_n : 0.0;
+  if (p.has_friction()) {
+    e.tangent = Vec2(e.geometry.normal.y(), -e.geometry.normal.x());
+    e.slip_rate_mps = e.tangent.dot(vb - va);
+  }
   return e;
+}
+
+void ContactDynamics::add_friction() {
+  // slip: -mu F s, on b at p_b along t and the opposite on a at p_a
+  stick_rows_.clear();
+  stick_pairs_.clear();
+  for (int k = 0; k < pair_count(); ++k) {
+    const auto ku = static_cast<std::size_t>(k);
+    const ContactPair& p = pairs_[ku];
+    PairEvaluation& e = last_[ku];
+    e.friction_n = 0.0;
+    const PairMode& m = modes_[ku];
+    if (!p.has_friction() || m.phase != ContactPhase::pressing) continue;
+    if (m.slip == SlipPhase::stick) {
+      stick_pairs_.push_back(k);
+      stick_rows_.push_back(StickRow{p.body_a, p.body_b, e.geometry.point_a_m,
+                                     e.geometry.point_b_m, e.tangent, e.slip_rate_mps});
+      continue;
+    }
+    e.friction_n = -p.friction * e.force_n * m.slip_sign;
+    const Vec2 f = e.friction_n * e.tangent;
+    model_.add_point_force(p.body_b, q_, e.geometry.point_b_m, f, gen_force_);
+    model_.add_point_force(p.body_a, q_, e.geometry.point_a_m, -f, gen_force_);
+  }
+  if (stick_rows_.empty()) return;
+  // stick: the forces that hold the sticking pairs, given everything else
+  u_dot_ = gen_force_.cwiseQuotient(model_.mass_diagonal());
+  stick_.solve(model_, q_, u_, u_dot_, stick_rows_, stick_force_n_);
+  for (std::size_t j = 0; j < stick_rows_.size(); ++j) {
+    const StickRow& r = stick_rows_[j];
+    last_[static_cast<std::size_t>(stick_pairs_[j])].friction_n = stick_force_n_[j];
+    const Vec2 f = stick_force_n_[j] * r.tangent;
+    model_.add_point_force(r.body_b, q_, r.point_b_m, f, gen_force_);
+    model_.add_point_force(r.body_a, q_, r.point_a_m, -f, gen_force_);
+  }
+}
+
+void ContactDynamics::choose_slip_phase(int k, const Eigen::VectorXd& y) {
+  const auto ku = static_cast<std::size_t>(k);
+  PairMode& m = modes_[ku];
+  m.slip = SlipPhase::stick;
+  Eigen::VectorXd f(state_size());  // at events only, not per step
+  derivative(y, f);
+  const PairEvaluation& e = last_[ku];
+  const double mu_f = pairs_[ku].friction * e.force_n;
+  if (std::abs(e.slip_rate_mps) <= kStickSpeed_mps && std::abs(e.friction_n) <= mu_f) return;
+  // slip: along the tangential speed, or, from rest, the way the load drives
+  // it (against the force that would have held it)
+  m.slip = SlipPhase::slip;
+  if (std::abs(e.slip_rate_mps) > kStickSpeed_mps) {
+    m.slip_sign = e.slip_rate_mps > 0.0 ? 1.0 : -1.0;
+  } else {
+    m.slip_sign = e.friction_n > 0.0 ? -1.0 : 1.0;
+  }
+  derivative(y, f);
 }
 
 void ContactDynamics::derivative(const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
@@ -122,6 +196,14 @@ void ContactDynamics::derivative(const Eigen::VectorXd& y, Eigen::VectorXd& dy) 
     const Vec2 f = e.force_n * e.geometry.normal;
     model_.add_point_force(p.body_b, q_, e.geometry.point_b_m, f, gen_force_);
     model_.add_point_force(p.body_a, q_, e.geometry.point_a_m, -f, gen_force_);
+  }
+  if (has_friction_) {
+    add_friction();
+    for (int k = 0; k < pair_count(); ++k) {
+      const PairEvaluation& e = last_[static_cast<std::size_t>(k)];
+      dy[tangential_impulse_index(k)] = e.friction_n;
+      dy[dissipation_index(k)] = -e.friction_n * e.slip_rate_mps;
+    }
   }
   dy.head(n) = u_;
   dy.segment(n, n) = gen_force_.cwiseQuotient(model_.mass_diagonal());

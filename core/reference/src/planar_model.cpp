@@ -125,6 +125,20 @@ Vec2 PlanarModel::point_velocity(int body, ConstVectorRef q, ConstVectorRef u,
   return Vec2::Zero();
 }
 
+Vec2 PlanarModel::point_centripetal_acceleration(int body, ConstVectorRef q, ConstVectorRef u,
+                                                 const Vec2& p_m) const {
+  const ModelBody& b = bodies_[static_cast<std::size_t>(body)];
+  switch (b.kind) {
+    case Kind::fixed: return Vec2::Zero();
+    case Kind::pendulum: return -u[b.coord] * u[b.coord] * (p_m - b.anchor_world_m);
+    case Kind::free: {
+      const double w = u[b.coord + 2];
+      return -w * w * (p_m - Vec2(q.segment<2>(b.coord)));
+    }
+  }
+  return Vec2::Zero();
+}
+
 void PlanarModel::gravity_forces(ConstVectorRef q, Eigen::VectorXd& gen_force) const {
   gen_force.setZero(n_);
   for (std::size_t i = 0; i < bodies_.size(); ++i) {

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "planarbench/errors.hpp"
+#include "planarbench/reference/coulomb_friction.hpp"
 #include "planarbench/reference/pair_geometry.hpp"
 #include "planarbench/reference/planar_model.hpp"
 #include "planarbench/reference/reference_settings.hpp"
@@ -57,7 +58,13 @@ class ReferenceEngine final : public Engine {
     solver_.reset();
     bodies_ = static_cast<int>(c.bodies.size());
     pair_laws_ = nlohmann::json::object();
-    for (const auto& p : c.contacts) pair_laws_[p.name] = contact_law_name(p.law);
+    friction_ = nlohmann::json::object();
+    pair_names_.clear();
+    for (const auto& p : c.contacts) {
+      pair_laws_[p.name] = contact_law_name(p.law);
+      pair_names_.push_back(p.name);
+      if (p.has_friction()) friction_[p.name] = p.friction;
+    }
     outline_points_ = nlohmann::json::object();
     for (const auto& b : c.bodies) outline_points_[b.name] = b.outline_points;
     try {
@@ -101,6 +108,18 @@ class ReferenceEngine final : public Engine {
         "one contact per pair at the deepest point; with several overlap regions only the "
         "deepest carries force; the force acts at the contact points (torques included)";
     m["joints"] = "joint coordinates: revolute joints to ground hold by construction";
+    if (!friction_.empty()) {
+      m["friction"] = {
+          {"coefficient", friction_},
+          {"model",
+           "Coulomb, one coefficient (SPEC §7), at the pair's contact points while the normal "
+           "force presses: slip f = -mu F along the slip; stick rigid (the limit of a tangential "
+           "spring capped by Coulomb): the force that keeps the points' relative tangential "
+           "acceleration at -100/s x their slip speed, solved for all stuck pairs together; "
+           "stick / slip changes located as events (coulomb_friction.hpp)"},
+          {"stick_speed_mps", kStickSpeed_mps},
+          {"stick_rate_per_s", kStickRate_per_s}};
+    }
     m["not_expressed"] = nlohmann::json::array();
     return m;
   }
@@ -136,6 +155,17 @@ class ReferenceEngine final : public Engine {
     x["rhs_evaluations"] = s.rhs_evaluations;
     x["rejected_steps"] = s.rejected;
     x["events_located"] = s.events;
+    if (!friction_.empty()) {
+      x["friction_dissipation_j"] = solver_->friction_dissipation_j();
+      nlohmann::json jt = nlohmann::json::object();
+      for (std::size_t k = 0; k < pair_names_.size(); ++k) {
+        jt[pair_names_[k]] = solver_->tangential_impulse_ns(static_cast<int>(k));
+      }
+      x["tangential_impulse_ns"] = jt;
+      x["friction_note"] =
+          "integrated with the motion over the whole run: the energy friction dissipated (J) "
+          "and each pair's tangential impulse on its body_b (N s, along t = (n.y, -n.x))";
+    }
     return x;
   }
 
@@ -150,6 +180,8 @@ class ReferenceEngine final : public Engine {
   std::unique_ptr<ReferenceSolver> solver_;
   int bodies_ = 0;
   nlohmann::json pair_laws_ = nlohmann::json::object();
+  nlohmann::json friction_ = nlohmann::json::object();  // pair name -> coefficient
+  std::vector<std::string> pair_names_;
   nlohmann::json outline_points_ = nlohmann::json::object();
 };
 

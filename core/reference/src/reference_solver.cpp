@@ -113,6 +113,8 @@ double ReferenceSolver::event_value(EventKind kind, int k, const PairEvaluation&
     case EventKind::lift: return e.geometry.gap_m;
     case EventKind::unclamp:
     case EventKind::clamp: return e.unclamped_force_n;
+    case EventKind::slip_ends: return sys_.modes()[static_cast<std::size_t>(k)].slip_sign * e.slip_rate_mps;
+    case EventKind::stick_breaks: return sys_.pair(k).friction * e.force_n - std::abs(e.friction_n);
   }
   return 0.0;
 }
@@ -126,6 +128,8 @@ bool ReferenceSolver::event_exits(EventKind kind, int k, const PairEvaluation& e
     case EventKind::unclamp: return g > 0.0;
     case EventKind::clamp: return g < 0.0;
     case EventKind::lift: return g > 0.0;
+    case EventKind::slip_ends:
+    case EventKind::stick_breaks: return g < 0.0;
   }
   return false;
 }
@@ -138,7 +142,7 @@ std::optional<ReferenceSolver::Event> ReferenceSolver::first_event(double h) {
     const PairEvaluation& e0 = pairs_[ku];
     const PairEvaluation& e1 = pairs1_[ku];
     // the events that can end the pair's current phase
-    EventKind kinds[2];
+    EventKind kinds[3];
     int nk = 0;
     switch (sys_.modes()[ku].phase) {
       case ContactPhase::apart: kinds[nk++] = EventKind::declare; break;
@@ -149,6 +153,10 @@ std::optional<ReferenceSolver::Event> ReferenceSolver::first_event(double h) {
       case ContactPhase::pressing:
         kinds[nk++] = EventKind::clamp;
         kinds[nk++] = EventKind::lift;
+        if (sys_.pair(k).has_friction()) {
+          kinds[nk++] = sys_.modes()[ku].slip == SlipPhase::slip ? EventKind::slip_ends
+                                                                 : EventKind::stick_breaks;
+        }
         break;
     }
     for (int i = 0; i < nk; ++i) {
@@ -222,9 +230,14 @@ void ReferenceSolver::apply(const Event& ev) {
       break;
     }
     case EventKind::press:
-    case EventKind::unclamp: m.phase = ContactPhase::pressing; break;
+    case EventKind::unclamp:
+      m.phase = ContactPhase::pressing;
+      if (sys_.pair(ev.pair).has_friction()) sys_.choose_slip_phase(ev.pair, y_);
+      break;
     case EventKind::clamp:
     case EventKind::lift: m.phase = ContactPhase::touching; break;
+    case EventKind::slip_ends:
+    case EventKind::stick_breaks: sys_.choose_slip_phase(ev.pair, y_); break;
   }
   ++stats_.events;
 }
@@ -537,5 +550,16 @@ SolverStats ReferenceSolver::stats() const {
 }
 
 double ReferenceSolver::energy_j() const { return sys_.energy_j(y_out_); }
+
+double ReferenceSolver::friction_dissipation_j() const {
+  if (!sys_.has_friction()) return 0.0;
+  double w = 0.0;
+  for (int k = 0; k < sys_.pair_count(); ++k) w += y_out_[sys_.dissipation_index(k)];
+  return w;
+}
+
+double ReferenceSolver::tangential_impulse_ns(int k) const {
+  return sys_.has_friction() ? y_out_[sys_.tangential_impulse_index(k)] : 0.0;
+}
 
 }  // namespace pb

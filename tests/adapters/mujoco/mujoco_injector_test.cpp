@@ -56,8 +56,7 @@ class Injection : public ::testing::Test {
     PairParams p;
     p.gap_m = 1e3;  // inactive: MuJoCo reports the contact, never solves it
     o.pairs.push_back(p);
-    model_ = load_mjcf(write_mjcf(c_, o));
-    layout_ = model_layout(model_.get(), c_);
+    model_ = test::load_case(c_, o, layout_);
     data_.reset(mj_makeData(model_.get()));
     set_initial_state(model_.get(), data_.get(), c_, layout_);
     injector_ = std::make_unique<ForceInjector>(c_, model_.get(), layout_);

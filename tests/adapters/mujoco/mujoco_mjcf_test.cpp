@@ -66,8 +66,7 @@ class CompiledScene : public ::testing::Test {
  protected:
   void SetUp() override {
     c_ = scene();
-    model_ = load_mjcf(write_mjcf(c_, options_for(c_)));
-    layout_ = model_layout(model_.get(), c_);
+    model_ = test::load_case(c_, options_for(c_), layout_);
     data_.reset(mj_makeData(model_.get()));
     set_initial_state(model_.get(), data_.get(), c_, layout_);
     mj_forward(model_.get(), data_.get());
@@ -157,7 +156,7 @@ TEST(Mjcf, MovingHalfPlaneIsRefused) {
   g.mass_kg = 1.0;
   g.inertia_kgm2 = 1.0;
   c.bodies.push_back(g);
-  EXPECT_THROW((void)write_mjcf(c, MjcfOptions{}), EngineError);
+  EXPECT_THROW((void)write_mjcf(c, plan_mujoco(c, 0.01), MjcfOptions{}), EngineError);
 }
 
 }  // namespace

@@ -37,8 +37,8 @@ TEST(MujocoModel, InitialStateMapsVelocitiesAndAngle) {
   c.bodies[0].angular_velocity_radps = 3.0;
   MjcfOptions o;
   o.pairs.assign(1, PairParams{});
-  const ModelPtr m = load_mjcf(write_mjcf(c, o));
-  const ModelLayout L = model_layout(m.get(), c);
+  ModelLayout L;
+  const ModelPtr m = test::load_case(c, o, L);
   DataPtr d(mj_makeData(m.get()));
   set_initial_state(m.get(), d.get(), c, L);
   mj_forward(m.get(), d.get());

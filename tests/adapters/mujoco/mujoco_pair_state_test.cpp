@@ -27,14 +27,12 @@ struct Compiled {
     MjcfOptions o;
     for (std::size_t k = 0; k < c.contacts.size(); ++k) {
       PairParams p;
-      p.margin_m = 0.0;
       p.gap_m = active ? 0.0 : 1e3;
       p.solref = {-1e4, -10.0};
       p.solimp = {0.9999, 0.9999, 0.001, 0.5, 2.0};
       o.pairs.push_back(p);
     }
-    model.reset(load_mjcf(write_mjcf(c, o)).release());
-    layout = model_layout(model.get(), c);
+    model.reset(test::load_case(c, o, layout).release());
     data.reset(mj_makeData(model.get()));
     set_initial_state(model.get(), data.get(), c, layout);
     mj_forward(model.get(), data.get());

@@ -20,12 +20,10 @@ struct Probe {
     MjcfOptions o;
     for (std::size_t k = 0; k < c.contacts.size(); ++k) {
       PairParams p;
-      p.margin_m = 0.01;
       p.gap_m = 0.01 + 1e3;  // every pair inactive
       o.pairs.push_back(p);
     }
-    model = load_mjcf(write_mjcf(c, o));
-    layout = model_layout(model.get(), c);
+    model = test::load_case(c, o, layout, 0.01);
   }
   ModelPtr model;
   ModelLayout layout;

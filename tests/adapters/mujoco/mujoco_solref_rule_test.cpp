@@ -43,8 +43,7 @@ struct Ruled {
     p.solref = {0.0, 0.0};
     p.solimp = {0.9999, 0.9999, 0.001, 0.5, 2.0};
     o.pairs.push_back(p);
-    model.reset(load_mjcf(write_mjcf(case_, o)).release());
-    layout = model_layout(model.get(), case_);
+    model.reset(test::load_case(case_, o, layout).release());
     data.reset(mj_makeData(model.get()));
     set_initial_state(model.get(), data.get(), case_, layout);
     rule.emplace(case_, model.get(), layout);

@@ -26,7 +26,8 @@ ModelPtr bouncing_disk(const std::string& integrator) {
   p.solref = {-1e4, -10.0};
   p.solimp = {0.9999, 0.9999, 0.001, 0.5, 2.0};
   o.pairs.push_back(p);
-  return load_mjcf(write_mjcf(c, o));
+  ModelLayout layout;
+  return test::load_case(c, o, layout);
 }
 
 class SplitStep : public ::testing::TestWithParam<const char*> {};

@@ -7,6 +7,9 @@
 #include <numbers>
 #include <string>
 
+#include "mujoco_mjcf.hpp"
+#include "mujoco_model.hpp"
+#include "mujoco_plan.hpp"
 #include "planarbench/case.hpp"
 
 namespace pb::test {
@@ -111,6 +114,17 @@ inline Case dual_pendulum(double duration_s = 2.0) {
   cp.law = LankaraniNikravesh{hertz_stiffness(mat), 1.5, 0.7, mat};
   cs.contacts.push_back(cp);
   return cs;
+}
+
+// the MuJoCo model of c under options o, written from c's plan with the
+// given detection margin (m), and the layout of its names
+inline internal::mujoco::ModelPtr load_case(const Case& c, const internal::mujoco::MjcfOptions& o,
+                                            internal::mujoco::ModelLayout& layout,
+                                            double margin_m = 0.0) {
+  const internal::mujoco::MujocoPlan plan = internal::mujoco::plan_mujoco(c, margin_m);
+  internal::mujoco::ModelPtr m = internal::mujoco::load_mjcf(internal::mujoco::write_mjcf(c, plan, o));
+  layout = internal::mujoco::model_layout(m.get(), c, plan);
+  return m;
 }
 
 }  // namespace pb::test

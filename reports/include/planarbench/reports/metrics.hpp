@@ -28,6 +28,14 @@ struct MetricValue {
   std::string note;      // e.g. "episode missing in run", "compared up to t = 0.4965 s"
 };
 
+// One value of metric `name` of `run` against `against`: error = |actual -
+// desired|, divided by |desired| when `relative` (its unit is then "1");
+// `unit` is the quantity's.
+[[nodiscard]] MetricValue metric_value(const Case& c, const RunResult& run,
+                                       const std::string& against, const std::string& name,
+                                       double actual, double desired, bool relative,
+                                       const std::string& unit);
+
 // The metrics of `run` against `baseline`, both runs of case `c`. Trajectories:
 // the run's samples, deduplicated by time (an engine with a step coarser than
 // the grid repeats its last state), are linearly interpolated onto the

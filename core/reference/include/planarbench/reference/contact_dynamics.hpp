@@ -4,6 +4,10 @@
 //   q' = u,  M u' = Q_gravity + Q_contact(q, u),  J_k' = F_k,
 // where J_k, the running normal impulse of pair k (N s), is integrated with
 // the motion so that episode impulses are as accurate as the trajectory.
+// A case with friction on any pair (SPEC §7) appends, per pair, its running
+// tangential impulse Jt_k' = f_k (N s) and the energy its friction has
+// dissipated, W_k' = -f_k v_k >= 0 (J): y = [q, u, J, Jt, W]. A frictionless
+// case keeps y = [q, u, J] and the arithmetic it always had.
 //
 // Contact forces (paper §2.1.2). For each pair the geometry gives the signed
 // gap s, the normal n (a -> b) and the contact points p_a, p_b (pair_geometry).
@@ -17,6 +21,8 @@
 //             turns positive, or after the law's clamp released it;
 //   pressing  F = the law without its clamp (unclamped_force.hpp).
 // Inside each phase f is smooth, which is what an order-p integrator needs.
+// Friction (coulomb_friction.hpp) acts while a pair presses, in the pair's
+// slip or stick phase, which also change only at located events.
 #pragma once
 
 #include <Eigen/Core>
@@ -25,6 +31,7 @@
 #include <vector>
 
 #include "planarbench/case.hpp"
+#include "planarbench/reference/coulomb_friction.hpp"
 #include "planarbench/reference/ode_system.hpp"
 #include "planarbench/reference/pair_geometry.hpp"
 #include "planarbench/reference/planar_model.hpp"
@@ -36,6 +43,10 @@ enum class ContactPhase { apart, touching, pressing };
 struct PairMode {
   ContactPhase phase = ContactPhase::apart;
   double approach_speed_mps = 0.0;  // m/s, delta_dot latched when the contact was declared
+  // friction (pairs with friction > 0): the tangential phase while pressing,
+  // and in slip the direction s = +-1 of the tangential speed it opposes
+  SlipPhase slip = SlipPhase::slip;
+  double slip_sign = 1.0;
 };
 
 struct PairEvaluation {
@@ -43,6 +54,12 @@ struct PairEvaluation {
   double gap_rate_mps = 0.0;        // m/s, d(gap)/dt, > 0 separating
   double unclamped_force_n = 0.0;   // N, the law without the clamp at 0
   double force_n = 0.0;             // N, applied (phase pressing: unclamped; else 0)
+  // friction: unit tangent t = (n.y, -n.x), the tangential speed of b's
+  // contact point relative to a's along it, and the tangential force on b
+  // along t (0 unless the pair has friction and presses). Set by derivative().
+  Vec2 tangent = Vec2(1.0, 0.0);
+  double slip_rate_mps = 0.0;       // m/s
+  double friction_n = 0.0;          // N
 };
 
 class ContactDynamics final : public OdeSystem {
@@ -52,11 +69,21 @@ class ContactDynamics final : public OdeSystem {
 
   [[nodiscard]] int coordinates() const { return model_.coordinates(); }
   [[nodiscard]] int pair_count() const { return static_cast<int>(pairs_.size()); }
-  [[nodiscard]] int state_size() const { return 2 * coordinates() + pair_count(); }
+  [[nodiscard]] bool has_friction() const { return has_friction_; }
+  [[nodiscard]] int state_size() const {
+    return 2 * coordinates() + (has_friction_ ? 3 : 1) * pair_count();
+  }
   [[nodiscard]] const PlanarModel& model() const { return model_; }
   [[nodiscard]] const ContactPair& pair(int k) const { return pairs_[static_cast<std::size_t>(k)]; }
   // index of pair k's impulse in y
   [[nodiscard]] int impulse_index(int k) const { return 2 * coordinates() + k; }
+  // with friction: index of pair k's tangential impulse and friction dissipation in y
+  [[nodiscard]] int tangential_impulse_index(int k) const {
+    return 2 * coordinates() + pair_count() + k;
+  }
+  [[nodiscard]] int dissipation_index(int k) const {
+    return 2 * coordinates() + 2 * pair_count() + k;
+  }
 
   // the discrete phase of every pair; f uses it, the solver changes it
   [[nodiscard]] std::vector<PairMode>& modes() { return modes_; }
@@ -70,8 +97,15 @@ class ContactDynamics final : public OdeSystem {
   [[nodiscard]] const std::vector<PairEvaluation>& last_pairs() const { return last_; }
   [[nodiscard]] long evaluations() const { return evaluations_; }
 
-  // pair k at y under `mode`, without the derivative
+  // pair k at y under `mode`, without the derivative (friction_n: 0)
   [[nodiscard]] PairEvaluation evaluate_pair(int k, const Eigen::VectorXd& y, const PairMode& mode);
+
+  // Chooses pair k's tangential phase at y now that it presses (at its
+  // onset, when its slip speed crossed zero, or when its stick force reached
+  // the cone): stick if it can hold (|v| <= kStickSpeed_mps and the stick
+  // force within friction x F), else slip in the direction the load drives
+  // it. Evaluates f at y (last_pairs then holds the result).
+  void choose_slip_phase(int k, const Eigen::VectorXd& y);
 
   [[nodiscard]] BodyState body_state(int body, const Eigen::VectorXd& y) const;
   [[nodiscard]] double energy_j(const Eigen::VectorXd& y) const;
@@ -90,6 +124,9 @@ class ContactDynamics final : public OdeSystem {
 
  private:
   PairEvaluation evaluate(int k, const PairMode& mode);  // on q_, u_
+  // the friction forces of every pair that has friction and presses, added
+  // to gen_force_ (slip first, then the stick solve on top of them)
+  void add_friction();
 
   PlanarModel model_;
   std::vector<ContactPair> pairs_;
@@ -102,6 +139,13 @@ class ContactDynamics final : public OdeSystem {
   std::vector<bool> convex_;            // body is convex (its centre in its material)
   Eigen::VectorXd q_, u_, gen_force_;  // scratch
   long evaluations_ = 0;
+  // friction
+  bool has_friction_ = false;
+  StickSolve stick_;
+  std::vector<StickRow> stick_rows_;     // scratch: the sticking pairs' rows
+  std::vector<int> stick_pairs_;         // scratch: their pair indices
+  std::vector<double> stick_force_n_;    // scratch: their forces
+  Eigen::VectorXd u_dot_;                // scratch
 };
 
 }  // namespace pb

@@ -49,6 +49,12 @@ class PlanarModel {
   [[nodiscard]] Vec2 point_velocity(int body, ConstVectorRef q, ConstVectorRef u,
                                     const Vec2& p_m) const;
 
+  // the part of that velocity's rate not linear in u_dot: -omega^2 r, r the
+  // point's offset from the body's centre of rotation (centre of mass, or
+  // pivot); the whole rate is this plus the rate of J u at u_dot
+  [[nodiscard]] Vec2 point_centripetal_acceleration(int body, ConstVectorRef q, ConstVectorRef u,
+                                                    const Vec2& p_m) const;
+
   // generalised forces of gravity (overwrites Q)
   void gravity_forces(ConstVectorRef q, Eigen::VectorXd& gen_force) const;
   // adds the generalised force of world force f_n applied at world point p_m

@@ -12,6 +12,12 @@
 //   pressing -> touching  when F_u falls below 0 (the clamp: the law would
 //                         pull) or s rises above 0;
 //   touching -> apart     when s rises above thr: the episode closes there.
+// A pair with friction, while pressing (coulomb_friction.hpp; v its slip
+// speed, s the latched slip direction, f its tangential force, F its normal
+// force, mu its coefficient):
+//   slip     -> ?         when s v falls below 0 (the slip stops or reverses),
+//   stick    -> ?         when |f| rises above mu F (the load leaves the cone);
+// at each, and when the pair starts pressing, choose_slip_phase decides.
 // Each event is located by re-taking the step from its start with a shorter
 // length (event_location.hpp) until the phase change is bracketed to a few
 // ulps of t; the step is then accepted up to that point, so that no step ever
@@ -81,10 +87,14 @@ class ReferenceSolver {
   [[nodiscard]] SolverStats stats() const;
   // total mechanical energy at time(), J
   [[nodiscard]] double energy_j() const;
+  // energy dissipated by friction up to time(), J (0 without friction)
+  [[nodiscard]] double friction_dissipation_j() const;
+  // tangential impulse of pair k's friction on body b up to time(), N s
+  [[nodiscard]] double tangential_impulse_ns(int k) const;
   [[nodiscard]] IntegratorKind integrator() const { return kind_; }
 
  private:
-  enum class EventKind { declare, release, press, unclamp, clamp, lift };
+  enum class EventKind { declare, release, press, unclamp, clamp, lift, slip_ends, stick_breaks };
   struct Event {
     int pair = -1;
     EventKind kind = EventKind::declare;

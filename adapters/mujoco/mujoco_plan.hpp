@@ -1,0 +1,58 @@
+// The MuJoCo form of a case, decided once per build, before any MJCF is
+// written: what each case body becomes (geom type, convex pieces and their
+// bipyramid apexes, joints) and each case pair (collider, margin, contact
+// dimension, friction). write_mjcf, model_layout and the engine read it, so
+// a polygon is decomposed once and every stage agrees on what it wrote.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "mujoco_geometry.hpp"
+#include "planarbench/case.hpp"
+
+namespace pb::internal::mujoco {
+
+struct BodyPlan {
+  GeomType geom = GeomType::plane;
+  // mesh: the convex polygons, one geom each (the polygon itself when convex),
+  // and the apex over which each one's bipyramid stands (mujoco_geometry.hpp)
+  std::vector<Polygon> pieces;
+  std::vector<Vec2> apexes;
+  bool decomposed = false;
+  std::string decomposition;  // how, when decomposed
+  int joint = -1;             // the case joint of a pendulum body, -1 otherwise
+  [[nodiscard]] int geom_count() const {
+    return pieces.empty() ? 1 : static_cast<int>(pieces.size());
+  }
+};
+
+struct PairPlan {
+  bool present = false;  // false when both bodies are fixed (no <pair> written)
+  GeomType geom_a = GeomType::plane;
+  GeomType geom_b = GeomType::plane;
+  Collider collider = Collider::none;
+  // m: MuJoCo reports the pair below this distance (exact colliders only: a
+  // margin spoils MPR's depth)
+  double margin_m = 0.0;
+  // condim 1 (frictionless) or 3 (Coulomb friction, SPEC §7), and the pair's
+  // friction (tangent1, tangent2, spin, roll1, roll2): mu on both tangents,
+  // MuJoCo's pair defaults for spin and roll (unused at condim 3). In the
+  // x-z plane MuJoCo's first tangent is world y, where no body has a degree
+  // of freedom; the second is the plane's (mju_makeFrame), so mu must be on both
+  int condim = 1;
+  std::array<double, 5> friction = {1.0, 1.0, 0.005, 0.0001, 0.0001};
+  // MPR pair with an exact penetration to check MuJoCo's depth against
+  bool check_depth = false;
+};
+
+struct MujocoPlan {
+  std::vector<BodyPlan> bodies;  // index = Case::bodies index
+  std::vector<PairPlan> pairs;   // index = Case::contacts index
+};
+
+// detection_margin_m: the margin of exact-collider pairs (mujoco.detection_margin)
+[[nodiscard]] MujocoPlan plan_mujoco(const Case& c, double detection_margin_m);
+
+}  // namespace pb::internal::mujoco
