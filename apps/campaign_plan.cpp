@@ -195,6 +195,10 @@ const std::vector<CampaignMetric>& campaign_metrics() {
       {"first_peak_force_n", "N", "peak normal force of the first contact episode"},
       {"first_impulse_ns", "N s", "normal impulse of the first contact episode"},
       {"max_penetration_m", "m", "largest penetration over every episode"},
+      {"slide_acceleration_mps2", "m/s^2",
+       "steady acceleration along the line of the body on the case's first half-plane pair: "
+       "least-squares slope of its speed over the run's second half (0 while friction holds "
+       "it; the friction curve, SPEC §7)"},
       {"trace", "m",
        "positions of every moving body at trace_points times evenly over the run (not a "
        "column: trace_time_s and trace_position_m)"},

@@ -20,6 +20,7 @@
 #include "planarbench/case_loader.hpp"
 #include "planarbench/engines.hpp"
 #include "planarbench/errors.hpp"
+#include "planarbench/reports/friction_metrics.hpp"
 #include "planarbench/results_file.hpp"
 #include "planarbench/runner.hpp"
 #include "sweep_error.hpp"
@@ -165,6 +166,8 @@ std::vector<double> metrics_of(const CampaignPlan& plan, const Case& c, const Ru
       v = first ? first->peak_force_n : nan;
     } else if (m.name == "first_impulse_ns") {
       v = first ? first->impulse_ns : nan;
+    } else if (m.name == "slide_acceleration_mps2") {
+      v = steady_slide_acceleration_mps2(c, r);
     } else if (m.name == "max_penetration_m") {
       if (ok && !r.events.empty()) {
         v = 0.0;

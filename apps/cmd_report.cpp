@@ -16,6 +16,7 @@ struct ReportOptionsCli {
   std::string out;
   std::string thresholds;
   std::string sweep;
+  std::string campaign;
   bool quiet = false;
 };
 
@@ -25,6 +26,7 @@ int run_report(const ReportOptionsCli& opt) {
   options.out_dir = opt.out;
   options.thresholds = opt.thresholds;
   options.sweep = opt.sweep;
+  options.campaign = opt.campaign;
   // a misspelt case or engine would otherwise be a check silently never made
   options.check_thresholds = [&opt](const std::vector<Threshold>& t, const ResultsFile& r) {
     check_threshold_names(opt.thresholds, t, r);
@@ -49,6 +51,7 @@ int run_report(const ReportOptionsCli& opt) {
       std::printf(", work-precision of %zu cases", s.work_precision_cases);
     }
     if (s.campaign_cases > 0) std::printf(", campaign of %zu cases", s.campaign_cases);
+    if (s.friction_figures > 0) std::printf(", %zu friction figures", s.friction_figures);
     std::printf(")\n");
   }
   return 0;
@@ -76,6 +79,11 @@ Action add_report_command(CLI::App& app) {
                   "Sweep file written by `planarbench sweep`: adds the work-precision section "
                   "(log-log error vs wall time per case, time to reach 1e-3 and 1e-5 m, cost per "
                   "simulated second)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--campaign", opt->campaign,
+                  "A campaign's file (`planarbench campaign merge`) beside the results: adds its "
+                  "campaign section, and the friction curve when it sweeps a pair's friction and "
+                  "records slide_acceleration_mps2 (campaigns/friction_curve.toml)")
       ->check(CLI::ExistingFile);
   cmd->add_flag("--quiet,-q", opt->quiet, "Print nothing on success");
   return [opt] { return run_report(*opt); };

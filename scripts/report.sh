@@ -4,6 +4,7 @@
 # accuracy report (the README's report command):
 #   results/results.h5          the results file (HDF5, SPEC §5)
 #   results/sweep.h5            the work-precision sweep (HDF5, apps/cmd_sweep.cpp)
+#   results/friction_curve.h5   the friction curve (campaigns/friction_curve.toml)
 #   results/report/report.html  the report, self-contained (open it in a browser)
 #   results/report/report.md    the same in Markdown, with SVG figures
 # and prints the gate's verdict against cases/thresholds.toml.
@@ -24,7 +25,12 @@ if [ "${PB_SKIP_SWEEP:-0}" != 1 ]; then
   "$PB" sweep --case all --engine all --jobs "$(nproc)" --out results/sweep.h5
   sweep_args=(--sweep results/sweep.h5)
 fi
-"$PB" report results/results.h5 "${sweep_args[@]}" --thresholds cases/thresholds.toml --out results/report
+# the friction curve (issue 22): 11 friction coefficients x 5 engines, ~1 s
+rm -rf results/friction_curve
+"$PB" campaign run campaigns/friction_curve.toml --out results/friction_curve --jobs "$(nproc)" --quiet
+"$PB" campaign merge results/friction_curve --out results/friction_curve.h5 --quiet
+"$PB" report results/results.h5 "${sweep_args[@]}" --campaign results/friction_curve.h5 \
+  --thresholds cases/thresholds.toml --out results/report
 "$PB" check --thresholds cases/thresholds.toml results/results.h5 || rc=$((rc > 0 ? rc : $?))
 echo "report: results/report/report.html and results/report/report.md"
 exit "$rc"

@@ -422,9 +422,9 @@ void Box2dEngine::map_pairs() {
            "rigid stick, no creep (tangent impulses warm-started)"},
           {"not_expressed",
            nlohmann::json::array(
-               {"the contact point is the middle of the overlap, so a rolling circle resting "
-                "b2_linearSlop = 0.005 m deep rolls on R - 0.0025 m: its rolling acceleration "
-                "is g sin(theta) / (1 + I / (m (R - 0.0025)^2)), 0.67 % low for R = 0.25 m"})}};
+               {"the contact point is the middle of the overlap, so a circle resting d deep (up "
+                "to b2_linearSlop = 0.005 m) rolls on R - d / 2: a uniform disk's rolling "
+                "acceleration is low by (1/3) d / R (0.67 % at d = 0.005 m, R = 0.25 m)"})}};
     }
     pairs.push_back(pj);
   }

@@ -1,8 +1,9 @@
-#include "friction_metrics.hpp"
+#include "planarbench/reports/friction_metrics.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -61,6 +62,46 @@ bool read_truth(const RunResult& truth, TruthFriction& out) {
   // the closed form's own rounding of the stated position: 1e-9 of it
   out.normal_at_rest = rest > 0.0 && std::abs(gap0 + rest) <= 1e-9 * rest;
   return !out.phases.empty();
+}
+
+// the case's body on a line: its first pair whose body_a is a fixed
+// half-plane and body_b a moving body
+struct LineCase {
+  const Body* body = nullptr;
+  Vec2 tangent = Vec2(1.0, 0.0);  // the half-plane's surface direction (its body x)
+  double radius_m = 0.0;          // a disk's radius (its contact point turns with it), else 0
+  bool disk = false;
+};
+
+std::optional<LineCase> line_case(const Case& c) {
+  for (const ContactPair& p : c.contacts) {
+    const Body& line = c.bodies[static_cast<std::size_t>(p.body_a)];
+    const Body& body = c.bodies[static_cast<std::size_t>(p.body_b)];
+    if (!std::holds_alternative<HalfPlane>(line.shape) || body.fixed) continue;
+    LineCase lc;
+    lc.body = &body;
+    lc.tangent = Vec2(std::cos(line.angle_rad), std::sin(line.angle_rad));
+    if (const auto* circle = std::get_if<Circle>(&body.shape)) {
+      lc.radius_m = circle->radius_m;
+      lc.disk = true;
+    }
+    return lc;
+  }
+  return std::nullopt;
+}
+
+const BodyTrajectory* trajectory(const RunResult& r, const std::string& body) {
+  for (const auto& b : r.bodies) {
+    if (b.name == body) return &b;
+  }
+  return nullptr;
+}
+
+// the truth holds the body at rest from t = 0
+bool holds_at_rest(const TruthFriction& tf) {
+  const Phase& p = tf.phases.front();
+  return p.kind == "stick" && p.start_s == 0.0 && p.along_rate0_mps == 0.0 &&
+         tf.stick_acceleration_mps2 == 0.0;
 }
 
 // the body's motion along the line, deduplicated by time; `point` is the
@@ -170,8 +211,7 @@ Figures figures(const LineTrack& tr, const TruthFriction& tf, const RunResult& t
   const auto& ph = tf.phases;
 
   // held at rest from t = 0
-  if (ph[0].kind == "stick" && ph[0].start_s == 0.0 && ph[0].along_rate0_mps == 0.0 &&
-      tf.stick_acceleration_mps2 == 0.0) {
+  if (holds_at_rest(tf)) {
     const double b = std::min(ph[0].end_s, t_end);
     double worst = 0.0;
     for (std::size_t i = 0; i < tr.t.size() && tr.t[i] <= b; ++i) {
@@ -239,27 +279,17 @@ std::vector<MetricValue> friction_metrics(const Case& c, const RunResult& run,
   std::vector<MetricValue> out;
   if (c.contacts.size() != 1 || !c.contacts[0].has_friction()) return out;
   TruthFriction tf;
-  if (!read_truth(truth, tf)) return out;
-  const ContactPair& p = c.contacts[0];
-  const Body& line = c.bodies[static_cast<std::size_t>(p.body_a)];
-  const Body& body = c.bodies[static_cast<std::size_t>(p.body_b)];
-  if (!std::holds_alternative<HalfPlane>(line.shape) || body.fixed) return out;
-  const auto* circle = std::get_if<Circle>(&body.shape);
-  const double radius = circle ? circle->radius_m : 0.0;
-  const Vec2 tangent(std::cos(line.angle_rad), std::sin(line.angle_rad));
-  auto find = [&](const RunResult& r) -> const BodyTrajectory* {
-    for (const auto& b : r.bodies) {
-      if (b.name == body.name) return &b;
-    }
-    return nullptr;
-  };
-  const BodyTrajectory* rb = find(run);
-  const BodyTrajectory* tb = find(truth);
+  const auto lc = line_case(c);
+  if (!lc || !read_truth(truth, tf)) return out;
+  const BodyTrajectory* rb = trajectory(run, lc->body->name);
+  const BodyTrajectory* tb = trajectory(truth, lc->body->name);
   if (rb == nullptr || tb == nullptr) return out;
-  const Figures fr = figures(line_track(*rb, body, tangent, radius, c.gravity_mps2, tf.support_m),
-                             tf, truth, body.mass_kg, circle != nullptr);
-  const Figures ft = figures(line_track(*tb, body, tangent, radius, c.gravity_mps2, tf.support_m),
-                             tf, truth, body.mass_kg, circle != nullptr);
+  auto figures_of = [&](const BodyTrajectory& b) {
+    return figures(line_track(b, *lc->body, lc->tangent, lc->radius_m, c.gravity_mps2, tf.support_m),
+                   tf, truth, lc->body->mass_kg, lc->disk);
+  };
+  const Figures fr = figures_of(*rb);
+  const Figures ft = figures_of(*tb);
   auto add = [&](const char* name, double actual, double desired, bool relative, const char* unit,
                  int episode = -1) {
     if (std::isnan(desired)) return;  // the truth does not have it: not this case's metric
@@ -283,6 +313,30 @@ std::vector<MetricValue> friction_metrics(const Case& c, const RunResult& run,
     add("post_impact_spin_radps", as, ft.spin[k], true, "rad/s", static_cast<int>(k));
   }
   add("friction_dissipation_j", fr.dissipation, ft.dissipation, ft.dissipation > 1e-9, "J");
+  return out;
+}
+
+double steady_slide_acceleration_mps2(const Case& c, const RunResult& run) {
+  const auto lc = line_case(c);
+  if (!lc || run.status != RunStatus::ok) return kNaN;
+  const BodyTrajectory* b = trajectory(run, lc->body->name);
+  if (b == nullptr || b->time_s.size() < 3) return kNaN;
+  const LineTrack tr = line_track(*b, *lc->body, lc->tangent, lc->radius_m, c.gravity_mps2, 0.0);
+  const double t_end = tr.t.back();
+  return slope(tr.t, tr.w, 0.5 * t_end, t_end);
+}
+
+std::vector<std::pair<double, double>> hold_drift_series(const Case& c, const RunResult& run,
+                                                         const RunResult& truth) {
+  std::vector<std::pair<double, double>> out;
+  TruthFriction tf;
+  const auto lc = line_case(c);
+  if (!lc || !read_truth(truth, tf) || !holds_at_rest(tf)) return out;
+  const BodyTrajectory* b = trajectory(run, lc->body->name);
+  if (b == nullptr) return out;
+  const LineTrack tr =
+      line_track(*b, *lc->body, lc->tangent, lc->radius_m, c.gravity_mps2, tf.support_m);
+  for (std::size_t i = 0; i < tr.t.size(); ++i) out.emplace_back(tr.t[i], std::abs(tr.point[i]));
   return out;
 }
 

@@ -1,6 +1,6 @@
 #include "planarbench/reports/metrics.hpp"
 
-#include "friction_metrics.hpp"
+#include "planarbench/reports/friction_metrics.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -11,6 +11,7 @@
 #include "report_campaign.hpp"
 #include "report_figures.hpp"
 #include "report_files.hpp"
+#include "report_friction.hpp"
 #include "report_html.hpp"
 #include "planarbench/output_file.hpp"
 #include "report_mapping.hpp"
@@ -117,6 +118,17 @@ ReportSummary write_report(const ReportOptions& options) {
   if (results.campaign && !sweep_as_results) {
     report.campaign = internal::campaign_section(*results.campaign, options.results.string());
   }
+  // a campaign beside the results: its section (unless the results are one)
+  // and the friction curve
+  const ResultsFile campaign =
+      options.campaign.empty() ? ResultsFile{} : read_results_file(options.campaign);
+  if (!options.campaign.empty() && (!campaign.campaign || campaign.campaign->kind != "campaign")) {
+    throw InputError("--campaign", 0, options.campaign.string(),
+                     "holds no campaign table; give a file of `planarbench campaign merge`");
+  }
+  if (campaign.campaign && report.campaign.file.empty()) {
+    report.campaign = internal::campaign_section(*campaign.campaign, options.campaign.string());
+  }
   internal::FigureLimits limits;
   limits.max_outside = options.max_points_outside_contact;
   limits.max_inside = options.max_points_inside_contact;
@@ -142,6 +154,8 @@ ReportSummary write_report(const ReportOptions& options) {
                                                        internal::not_expressed(r->mapping)});
     }
   }
+  report.friction = internal::friction_section(
+      cases, results, campaign.campaign ? &*campaign.campaign : nullptr, options.campaign.string());
   const auto outcomes = check_thresholds(thresholds, metrics);
   std::size_t failed = 0;
   std::size_t known = 0;
@@ -199,6 +213,11 @@ ReportSummary write_report(const ReportOptions& options) {
       ++summary.svg_files;
     }
   }
+  for (const auto& f : report.friction.figures) {
+    internal::write_text_atomically(options.out_dir / ("figures/" + f.id + ".svg"), f.svg);
+    ++summary.svg_files;
+  }
+  summary.friction_figures = report.friction.figures.size();
   summary.campaign_cases = report.campaign.cases.size();
   summary.work_precision_cases = report.work_precision.size();
   summary.markdown = options.out_dir / "report.md";

@@ -117,14 +117,6 @@ std::string stats_text(const Stats& s) {
   return fmt::format("{} ({}..{})", number_text(s.median), number_text(s.lo), number_text(s.hi));
 }
 
-std::string file_safe(const std::string& s) {
-  std::string out;
-  for (const char ch : s) {
-    out += std::isalnum(static_cast<unsigned char>(ch)) != 0 || ch == '-' || ch == '_' ? ch : '_';
-  }
-  return out;
-}
-
 bool all_positive_spanning(const std::vector<double>& v) {
   double lo = kInf;
   double hi = -kInf;
@@ -161,6 +153,14 @@ double rms_spread(const std::vector<double>& x, const std::vector<double>& y) {
     ss += (x[i] - mx) * (x[i] - mx) + (y[i] - my) * (y[i] - my);
   }
   return std::sqrt(ss / static_cast<double>(n));
+}
+
+std::string file_safe(const std::string& s) {
+  std::string out;
+  for (const char ch : s) {
+    out += std::isalnum(static_cast<unsigned char>(ch)) != 0 || ch == '-' || ch == '_' ? ch : '_';
+  }
+  return out;
 }
 
 std::string line_plot_svg(const LinePlot& p) {

@@ -189,6 +189,16 @@ nlohmann::json report_data_json(const Report& report) {
   data["campaign"] = {{"file", report.campaign.file},
                       {"note", report.campaign.note},
                       {"cases", campaign_cases}};
+
+  // the friction section: figures (SVG text) and the curve's table
+  nlohmann::json friction_figures = nlohmann::json::array();
+  for (const auto& f : report.friction.figures) {
+    friction_figures.push_back({{"id", f.id}, {"title", f.title}, {"svg", f.svg}});
+  }
+  data["friction"] = {{"note", report.friction.note},
+                      {"curve_file", report.friction.curve_file},
+                      {"figures", friction_figures},
+                      {"curve", table_json(report.friction.curve)}};
   return data;
 }
 

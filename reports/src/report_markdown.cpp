@@ -84,6 +84,16 @@ std::string campaign_markdown(const Report& report) {
   return md;
 }
 
+std::string friction_markdown(const Report& report) {
+  const FrictionSection& f = report.friction;
+  std::string md = "## Friction\n\n" + f.note + "\n\n";
+  for (const auto& fig : f.figures) md += fmt::format("![{}](figures/{}.svg)\n\n", fig.title, fig.id);
+  if (!f.curve.rows.empty()) {
+    md += "### " + f.curve.title + "\n\n" + f.curve.note + "\n\n" + markdown_table(f.curve) + "\n";
+  }
+  return md;
+}
+
 std::vector<FigureView> figure_views(const Figure& f) {
   std::vector<FigureView> views;
   views.push_back(FigureView{"figures/" + f.id + ".svg", f.title, 0.0, f.t_end_s});
@@ -145,6 +155,7 @@ std::string report_markdown(const Report& report) {
   for (const auto& c : report.cases) md += fmt::format("- [{}](#{})\n", c.name, anchor(c.name));
   if (!report.work_precision.empty()) md += "- [Work-precision](#work-precision)\n";
   if (!report.campaign.cases.empty()) md += "- [Campaign](#campaign)\n";
+  if (!report.friction.figures.empty()) md += "- [Friction](#friction)\n";
   for (const auto& t : report.tables) md += fmt::format("- [{}](#{})\n", t.title, anchor(t.title));
   if (!report.results_file.empty()) md += "- [Parameter mapping](#parameter-mapping)\n";
   md += "\n";
@@ -179,6 +190,7 @@ std::string report_markdown(const Report& report) {
 
   if (!report.work_precision.empty()) md += work_precision_markdown(report);
   if (!report.campaign.cases.empty()) md += campaign_markdown(report);
+  if (!report.friction.figures.empty()) md += friction_markdown(report);
   for (const auto& t : report.tables) section_table(md, t);
   // a sweep-only report has no runs to map
   if (report.results_file.empty()) return md;

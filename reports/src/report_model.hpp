@@ -136,6 +136,14 @@ struct CampaignSection {
   std::vector<CampaignCaseSection> cases;
 };
 
+// the friction section (report_friction.hpp): figures as SVG text, one table
+struct FrictionSection {
+  std::string note;
+  std::string curve_file;  // the campaign file of the friction curve, "" when none
+  std::vector<CampaignFigure> figures;
+  Table curve;
+};
+
 struct Report {
   std::string results_file;                                     // as given on the command line
   std::string thresholds_file;                                  // "" when none
@@ -151,6 +159,7 @@ struct Report {
   std::vector<WorkPrecisionCase> work_precision;
   Table sweep_provenance;  // /parameters of the sweep file
   CampaignSection campaign;  // empty unless the results file holds a campaign
+  FrictionSection friction;  // empty without friction cases or a friction curve
 };
 
 }  // namespace pb::internal

@@ -11,7 +11,7 @@
 
 #include "planarbench/did_you_mean.hpp"
 #include "planarbench/errors.hpp"
-#include "friction_metrics.hpp"
+#include "planarbench/reports/friction_metrics.hpp"
 
 namespace pb {
 

@@ -59,6 +59,7 @@
     for (const c of data.cases) nav.appendChild(el('a', { href: '#case-' + slug(c.name) }, c.name));
     if (hasWorkPrecision()) nav.appendChild(el('a', { href: '#work-precision' }, 'Work-precision'));
     if (hasCampaign()) nav.appendChild(el('a', { href: '#campaign' }, 'Campaign'));
+    if (hasFriction()) nav.appendChild(el('a', { href: '#friction' }, 'Friction'));
     for (const t of data.tables) nav.appendChild(el('a', { href: '#table-' + slug(t.id) }, t.title));
     if (data.results_file) nav.appendChild(el('a', { href: '#mapping' }, 'Parameter mapping'));
   }
@@ -463,6 +464,24 @@
     main.appendChild(sec);
   }
 
+  // ---- friction (SPEC §7) ----------------------------------------------------
+  function hasFriction() {
+    return Boolean(data.friction && data.friction.figures.length);
+  }
+
+  function renderFriction(main) {
+    if (!hasFriction()) return;
+    const fr = data.friction;
+    const sec = el('section', { id: 'friction' });
+    sec.appendChild(el('h2', {}, 'Friction'));
+    sec.appendChild(el('p', { class: 'note' }, fr.note));
+    for (const f of fr.figures) {
+      sec.appendChild(el('div', { class: 'wp-plot', id: 'friction-' + slug(f.id) }, svgNode(f.svg)));
+    }
+    if (fr.curve && fr.curve.rows.length) renderTable(fr.curve, sec, 'h3');
+    main.appendChild(sec);
+  }
+
   // ---- parameter mapping ---------------------------------------------------
   function jsonNode(v) {
     if (v === null || typeof v !== 'object') return document.createTextNode(String(v));
@@ -507,6 +526,7 @@
   renderCases(main);
   renderWorkPrecision(main);
   renderCampaign(main);
+  renderFriction(main);
   for (const t of data.tables) renderTable(t, main);
   if (data.results_file) renderMappings(main);
 

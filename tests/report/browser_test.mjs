@@ -59,9 +59,10 @@ const work = path.resolve(args.work);
 fs.rmSync(work, { recursive: true, force: true });
 fs.mkdirSync(work, { recursive: true });
 const results = path.join(work, 'falling_ball.h5');
-// a closed-form truth, no truth, and a truth that is the converged reference
-// after the first impact (issue 13: drawn through the impacts)
-const CASES = ['falling_ball', 'falling_ball_paper', 'dual_pendulum'];
+// a closed-form truth, no truth, a truth that is the converged reference
+// after the first impact (issue 13: drawn through the impacts), and a block
+// that friction holds (issue 22: the friction section's drift figure)
+const CASES = ['falling_ball', 'falling_ball_paper', 'dual_pendulum', 'block_hold'];
 const reportDir = path.join(work, 'report');
 
 function run(argv, okCodes) {
@@ -77,7 +78,15 @@ function run(argv, okCodes) {
 }
 // exit 3 (a run diverged) still writes the file: the report must show it
 run(['run', '--case', CASES.join(','), '--engine', ENGINES.join(','), '--out', results, '--quiet'], [0, 3]);
-run(['report', results, '--out', reportDir], [0]);
+// the friction curve (issue 22) beside the results: the friction section's curve
+const frictionCurve = path.join(path.resolve(args['web-dir']), '..', '..', 'campaigns', 'friction_curve.toml');
+run(['campaign', 'run', frictionCurve, '--out', path.join(work, 'friction_curve'), '--quiet'], [0]);
+run(['campaign', 'merge', path.join(work, 'friction_curve'), '--out', path.join(work, 'friction_curve.h5'), '--quiet'], [0]);
+run(['report', results, '--campaign', path.join(work, 'friction_curve.h5'), '--out', reportDir], [0]);
+const reportMd = fs.readFileSync(path.join(reportDir, 'report.md'), 'utf8');
+const frictionSection = reportMd.slice(reportMd.indexOf('## Friction'));
+const frictionFigures = (frictionSection.match(/!\[[^\]]*\]\(figures\/[^)]+\.svg\)/g) || []).length;
+check(frictionFigures === 2, `report.md's friction section has 2 figures (block_hold's drift, the friction curve): ${frictionFigures}`);
 const html = path.join(reportDir, 'report.html');
 check(fs.existsSync(html), 'report.html written');
 
@@ -221,6 +230,12 @@ try {
   const fig5 = report.charts.find((c) => c.id === 'falling_ball_fig5');
   check(fig5 !== undefined && fig5.title.startsWith('Fig. 5'), 'falling_ball Fig. 5 (contact force) is on the page');
 
+  // the friction section (issue 22): its two figures drawn, the curve's 11 points tabulated
+  const frictionPlots = await page.locator('#friction .wp-plot svg').count();
+  check(frictionPlots === frictionFigures, `friction section draws its ${frictionFigures} figures: ${frictionPlots}`);
+  const curveRows = await page.locator('#friction table tbody tr').count();
+  check(curveRows === 11, `friction curve table has a row per tan(theta) / mu from 0.5 to 1.5: ${curveRows}`);
+
   // tables are there
   for (const id of ['capability', 'timings', 'metrics', 'provenance']) {
     const rows = await page.locator(`#tbl-${id} tbody tr`).count();
@@ -249,6 +264,11 @@ try {
     });
     check(layout.scrollWidth <= layout.innerWidth,
       `${size}: no horizontal overflow (page ${layout.scrollWidth} px wide in ${layout.innerWidth} px)`);
+    // the friction figures fit the width and are drawn (a box with an area)
+    const friction = await page.evaluate(() => [...document.querySelectorAll('#friction .wp-plot svg')]
+      .map((svg) => { const b = svg.getBoundingClientRect(); return [b.width, b.height, b.right]; }));
+    check(friction.length === 2 && friction.every(([w, h, right]) => w > 100 && h > 50 && right <= layout.innerWidth),
+      `${size}: friction figures drawn within the width (${JSON.stringify(friction.map((f) => f.map(Math.round)))})`);
     check(layout.top !== null && layout.top >= 0 && layout.top < layout.innerHeight,
       `${size}: the verdict starts in the first screen (top at ${layout.top} px)`);
     // a laptop sees the whole verdict without scrolling

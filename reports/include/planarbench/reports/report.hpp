@@ -23,6 +23,11 @@ struct ReportOptions {
   // sweep file written by `planarbench sweep`: adds the work-precision section;
   // empty: none (one of results and sweep must be given)
   std::filesystem::path sweep;
+  // a campaign's results file (`planarbench campaign merge`) beside the
+  // results: its campaign section, and the friction curve when it sweeps a
+  // pair's friction and records slide_acceleration_mps2
+  // (campaigns/friction_curve.toml); empty: none
+  std::filesystem::path campaign;
   std::filesystem::path out_dir;     // created when missing
   std::filesystem::path thresholds;  // empty: no pass/fail column
   // folder with report_template.html, report.js, report.css and
@@ -54,6 +59,7 @@ struct ReportSummary {
   std::size_t checks_known = 0;   // failing, declared before the run (known_breach)
   std::size_t work_precision_cases = 0;  // cases of the sweep file
   std::size_t campaign_cases = 0;        // cases of the campaign table
+  std::size_t friction_figures = 0;      // figures of the friction section
 };
 
 // Writes the report. Throws InputError (exit 2) for a missing or foreign

@@ -32,6 +32,7 @@
 //                           over the run (friction is then all that dissipates), J.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "planarbench/case.hpp"
@@ -47,5 +48,19 @@ namespace pb {
 
 // the names above, for the thresholds file
 [[nodiscard]] const std::vector<const char*>& friction_metric_names();
+
+// The steady acceleration of a run's slide, m/s^2, without a truth (the
+// campaign metric of the same name, for the friction curve): the
+// least-squares slope of the speed along the line of the body of the case's
+// first pair with a half-plane, over the run's second half (0 while it
+// holds); NaN when the case has no such pair or the run is not ok.
+[[nodiscard]] double steady_slide_acceleration_mps2(const Case& c, const RunResult& run);
+
+// The drift of a body held by friction: (t, |p(t)|) with p the displacement
+// along the line of its material contact point (as hold_drift_m reads it),
+// or empty when the truth does not hold at rest from t = 0.
+[[nodiscard]] std::vector<std::pair<double, double>> hold_drift_series(const Case& c,
+                                                                       const RunResult& run,
+                                                                       const RunResult& truth);
 
 }  // namespace pb
