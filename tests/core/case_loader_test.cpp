@@ -314,6 +314,23 @@ TEST(ParseCase, BaseCaseAndDefaults) {
   EXPECT_EQ(c.bodies[1].outline_points, 180);
   EXPECT_EQ(c.bodies[1].angle_rad, 0.0);
   EXPECT_EQ(c.contacts[0].threshold_m, 1e-10);
+  // absent friction is frictionless (SPEC §7)
+  EXPECT_EQ(c.contacts[0].friction, 0.0);
+  EXPECT_FALSE(c.contacts[0].has_friction());
+  EXPECT_EQ(c.first_pair_with_friction(), nullptr);
+}
+
+// friction on a pair, in every law; and --set contact.friction on every pair
+TEST(ParseCase, FrictionIsReadForEveryLaw) {
+  const Case kv = parse(with("damping = 10.0\n", "damping = 10.0\nfriction = 0.5\n"));
+  EXPECT_EQ(kv.contacts[0].friction, 0.5);
+  EXPECT_EQ(kv.first_pair_with_friction(), &kv.contacts[0]);
+  const Case hz = parse(with("law = \"kelvin_voigt\"\nstiffness = 1e4\ndamping = 10.0\n",
+                             "law = \"hertz\"\nstiffness = 1e9\nfriction = 0.25\n"));
+  EXPECT_EQ(hz.contacts[0].friction, 0.25);
+  SettingsOverrides o;
+  o.set("contact.friction", "0.125", SettingSource{"--set", 0});
+  EXPECT_EQ(parse(kBase, o).contacts[0].friction, 0.125);
 }
 
 // density is areal (kg/m^2): m = rho pi R^2, I = m R^2 / 2 for the exact disk
