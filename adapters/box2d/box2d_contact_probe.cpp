@@ -222,4 +222,11 @@ ContactGeometry probe_contact(const b2Body& a, const b2Body& b, ProbeScope scope
   return deepest.valid ? deepest : closest;
 }
 
+bool broad_phase_pair(const b2Body& a, const b2Body& b) {
+  for (const b2ContactEdge* e = a.GetContactList(); e != nullptr; e = e->next) {
+    if (e->other == &b) return true;
+  }
+  return false;
+}
+
 }  // namespace pb::internal::box2d

@@ -30,4 +30,9 @@ enum class ProbeScope { broad_phase, every_child };
 [[nodiscard]] ContactGeometry probe_contact(const b2Body& a, const b2Body& b,
                                             ProbeScope scope = ProbeScope::broad_phase);
 
+// Whether Box2D's broad phase holds some fixture-child pair of a and b (their
+// fat AABBs overlap): what probe_contact's `valid` is with
+// ProbeScope::broad_phase when the two are apart.
+[[nodiscard]] bool broad_phase_pair(const b2Body& a, const b2Body& b);
+
 }  // namespace pb::internal::box2d

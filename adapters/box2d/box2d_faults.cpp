@@ -65,8 +65,7 @@ std::string refused_input_reason(const Case& c, double dt_s) {
   return "";
 }
 
-std::string clamped_velocity_reason(const b2Body& body, double dt_s) {
-  const BodyState s = body_state(body);
+std::string clamped_velocity_reason(const BodyState& s, double dt_s) {
   const double step_m = s.velocity_mps.norm() * dt_s;
   const double turn_rad = std::abs(s.angular_velocity_radps) * dt_s;
   if (step_m >= kMaxTranslation_m * kAtClamp) {

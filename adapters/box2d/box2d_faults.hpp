@@ -18,6 +18,7 @@
 #include <string>
 
 #include "planarbench/case.hpp"
+#include "planarbench/engine.hpp"
 
 namespace pb::internal::box2d {
 
@@ -29,11 +30,11 @@ namespace pb::internal::box2d {
 // velocity).
 [[nodiscard]] std::string refused_input_reason(const Case& c, double dt_s);
 
-// Why this body's velocity after a step shows Box2D's clamp ("" when it does
+// Why a body's velocity after a step (its state s) shows Box2D's clamp ("" when it does
 // not): |v| h or |omega| h within 1e-5 of b2_maxTranslation or b2_maxRotation
 // (the clamp leaves exactly that, up to float rounding), or beyond it (a TOI
 // sub-step clamps with its shorter h).
-[[nodiscard]] std::string clamped_velocity_reason(const b2Body& body, double dt_s);
+[[nodiscard]] std::string clamped_velocity_reason(const BodyState& s, double dt_s);
 
 // Why an injected force would make Box2D clamp this body in the coming step
 // ("" when not): the velocity after the step, v + h (g + F / m) and

@@ -66,10 +66,17 @@ ContactSetScale contact_set_scale(const ContactSetMatrix& inverse_mass,
   ContactSetScale out;
   const auto n = inverse_mass.rows();
   if (n == 0 || static_cast<std::size_t>(n) != depths_m.size()) return out;
-  // w = A^+ 1, the least-norm forces that accelerate every point alike
+  // w = A^+ 1, the least-norm forces that accelerate every point alike; for
+  // one point A^+ = 1 / a (0 for a = 0), what the decomposition gives, without it
   using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxContactSetPoints, 1>;
-  const Eigen::CompleteOrthogonalDecomposition<ContactSetMatrix> cod(inverse_mass);
-  const Vector w = cod.solve(Vector::Ones(n));
+  Vector w(n);
+  if (n == 1) {
+    const double a = inverse_mass(0, 0);
+    w[0] = a != 0.0 ? 1.0 / a : 0.0;
+  } else {
+    const Eigen::CompleteOrthogonalDecomposition<ContactSetMatrix> cod(inverse_mass);
+    w = cod.solve(Vector::Ones(n));
+  }
   out.mass_kg = w.sum();
   double wr = 0.0;      // N s^2, w^T r
   double deepest = 0.0;  // m

@@ -11,6 +11,8 @@
 //    the bodies with power -F delta_dot <= -dU_e/dt, U_e(delta) = int_0^delta
 //    F_e: unclamped, -F_d delta_dot <= 0; clamped (F = 0), F_e + F_d < 0 needs
 //    F_d < 0, hence delta_dot < 0 and -F_e delta_dot >= 0;
+//  - Coulomb friction (SPEC §7) opposes the slip: its power -f v <= 0 (a
+//    stuck pair's force does no work on a contact point that does not slip);
 //  - a revolute joint to ground does no work.
 // So the kinetic energy never exceeds what the case has made available,
 //   KE(t) <= KE(0) + U_c(0) + W_g(t),   W_g(t) = sum_i m_i g . (x_i(t) - x_i(0)),
