@@ -41,7 +41,6 @@ TEST_P(FrictionEngine, MappingStatesTheCoefficientAndTheModel) {
 
 TEST_P(FrictionEngine, InjectRefusesFriction) {
   auto e = make_engine(GetParam());
-  e->settings();  // bound
   Case c = block_hold();
   const RunResult r = run_engine(*e, c, with(GetParam() + ".mode", "inject"));
   EXPECT_EQ(r.status, RunStatus::unsupported);
