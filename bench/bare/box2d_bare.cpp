@@ -48,27 +48,12 @@
 #include <string>
 #include <vector>
 
+#include "bare_scene.hpp"
+
+using namespace bare;
+
 namespace {
 
-struct Scene {
-  const char* name;
-  double radius_m, mass_kg, inertia_kgm2;
-  double x0_m, y0_m;
-  double ground_angle_rad;  // the half-plane's surface line, ccw from +x; through the origin
-  double extent_m;          // the case's surface length of the half-plane
-  double stiffness_n_per_m, damping_ns_per_m;
-  double friction;  // Coulomb coefficient, 0 = frictionless
-};
-
-// cases/falling_ball.toml, cases/disk_roll.toml
-constexpr Scene kFallingBall{"falling_ball", 0.5, 1.0, 0.125, 2.0, 2.0,
-                             -30.0 * std::numbers::pi / 180.0, 40.0, 1e4, 10.0, 0.0};
-constexpr Scene kDiskRoll{"disk_roll", 0.25, 1.0, 0.03125, 0.12495753617637623,
-                          0.21643280144610968, -30.0 * std::numbers::pi / 180.0, 8.0, 1e5, 600.0,
-                          0.3};
-
-constexpr double kDt = 1e-4;          // s
-constexpr double kGravity = 9.8066;   // m/s^2, along -y
 constexpr double kMaxSegment = 10.0;  // m, longest chain segment
 
 // the restitution, threshold and friction every contact of the pair takes as it begins
@@ -87,26 +72,12 @@ class Listener final : public b2ContactListener {
   float restitution_, threshold_, friction_;
 };
 
-struct Sample {
-  double x, y, angle, vx, vy, omega;
-};
 }  // namespace
-// the state read after every step: a small ring buffer, visible outside this
-// file so that the stores stay
-Sample g_samples[64];
 
 int main(int argc, char** argv) {
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: %s <falling_ball|disk_roll> <steps>\n", argv[0]);
-    return 2;
-  }
-  const std::string scene = argv[1];
-  const Scene* s = scene == "falling_ball" ? &kFallingBall : scene == "disk_roll" ? &kDiskRoll : nullptr;
-  const long steps = std::strtol(argv[2], nullptr, 10);
-  if (!s || steps < 0) {
-    std::fprintf(stderr, "unknown scene '%s' or bad step count\n", argv[1]);
-    return 2;
-  }
+  long steps = 0;
+  const Scene* s = parse_command_line(argc, argv, steps);
+  if (s == nullptr) return 2;
 
   // the law's restitution at m_eff = m (clamped Kelvin-Voigt, zeta < 1 in both scenes)
   const double zeta = s->damping_ns_per_m / (2.0 * std::sqrt(s->stiffness_n_per_m * s->mass_kg));

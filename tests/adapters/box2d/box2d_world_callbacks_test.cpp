@@ -31,46 +31,62 @@ TEST(Box2dWorldCallbacks, PairTableIsSymmetric) {
 // and sums the solver's impulses: m (1 + e) v over the bounce. Tolerances:
 // gravity acts during the impulse step, (1 + e) g dt relative to v (4e-4),
 // and float rounding (1e-6).
-TEST(Box2dWorldCallbacks, OnlyCasePairsCollideAndBounceWithTheLawsRestitution) {
-  const double dt = 1e-4;
-  b2World world(b2Vec2(0.0f, -9.8066f));
-  PairTable pairs;
-  pairs.reset(3);
-  pairs.set(0, 1, 0);
-  const bool enabled = true;
-  PairContactFilter filter(pairs, enabled);
-  std::vector<PairState> states(1);
-  states[0].law = KelvinVoigt{1e4, 10.0, 0.0};
-  states[0].per_onset = true;
-  states[0].threshold_mps = 0.02;
-  std::vector<BodyInertia> inertia(3);
-  inertia[0].fixed = true;
-  inertia[1] = BodyInertia{false, 1.0, 0.02, Vec2::Zero(), false, Vec2::Zero()};
-  inertia[2] = inertia[1];
-  double time_s = 0.0;
-  PairContactListener listener(pairs, states, inertia, time_s);
-  listener.reserve_log(4);
-  world.SetContactFilter(&filter);
-  world.SetContactListener(&listener);
-
-  std::vector<b2Body*> bodies;
-  const Body ground = box2d_test::ground_body();
-  const Body d1 = box2d_test::disk_body("d1", 0.2, 1.0, Vec2(-1.0, 0.5));
-  const Body d2 = box2d_test::disk_body("d2", 0.2, 1.0, Vec2(1.0, 0.5));
-  int index = 0;
-  for (const Body* b : {&ground, &d1, &d2}) {
-    const b2BodyDef def = body_def(*b);
+// A world with the adapter's filter and listener: case pair 0 joins bodies 0
+// and 1 with `state`; every moving body is a 1 kg disk with I = 0.02 kg m^2
+// (its mass data set after the fixtures, as the adapter does)
+struct CallbackWorld {
+  CallbackWorld(int body_count, PairState state) {
+    pairs.reset(body_count);
+    pairs.set(0, 1, 0);
+    states.assign(1, state);
+    inertia.assign(static_cast<std::size_t>(body_count),
+                   BodyInertia{false, 1.0, 0.02, Vec2::Zero(), false, Vec2::Zero()});
+    inertia[0].fixed = true;
+    world.SetContactFilter(&filter);
+    world.SetContactListener(&listener);
+  }
+  // adds b (the next body index) and returns Box2D's body
+  b2Body* add(const Body& b) {
+    const b2BodyDef def = body_def(b);
     b2Body* body = world.CreateBody(&def);
     FixtureOptions opt;
-    opt.body_index = index++;
+    opt.body_index = static_cast<int>(bodies.size());
     opt.half_plane_half_length_m = 5.0;
-    add_fixtures(*body, *b, opt);
-    if (!b->fixed) {
+    add_fixtures(*body, b, opt);
+    if (!b.fixed) {
       b2MassData md{1.0f, b2Vec2(0.0f, 0.0f), 0.02f};
       body->SetMassData(&md);
     }
     bodies.push_back(body);
+    return body;
   }
+  b2World world{b2Vec2(0.0f, -9.8066f)};
+  PairTable pairs;
+  bool enabled = true;
+  PairContactFilter filter{pairs, enabled};
+  std::vector<PairState> states;
+  std::vector<BodyInertia> inertia;
+  double time_s = 0.0;
+  PairContactListener listener{pairs, states, inertia, time_s};
+  std::vector<b2Body*> bodies;
+};
+
+TEST(Box2dWorldCallbacks, OnlyCasePairsCollideAndBounceWithTheLawsRestitution) {
+  const double dt = 1e-4;
+  PairState state;
+  state.law = KelvinVoigt{1e4, 10.0, 0.0};
+  state.per_onset = true;
+  state.threshold_mps = 0.02;
+  CallbackWorld w(3, state);
+  w.listener.reserve_log(4);
+  w.add(box2d_test::ground_body());
+  w.add(box2d_test::disk_body("d1", 0.2, 1.0, Vec2(-1.0, 0.5)));
+  w.add(box2d_test::disk_body("d2", 0.2, 1.0, Vec2(1.0, 0.5)));
+  b2World& world = w.world;
+  std::vector<b2Body*>& bodies = w.bodies;
+  std::vector<PairState>& states = w.states;
+  double& time_s = w.time_s;
+  const PairContactListener& listener = w.listener;
   double approach = 0.0;
   double separation = 0.0;
   double impulse = 0.0;
@@ -143,42 +159,17 @@ TEST(Box2dWorldCallbacks, DisabledFilterRejectsEverything) {
 // here): 2.4e-4
 TEST(Box2dWorldCallbacks, PairFrictionIsSetOnItsContacts) {
   const double dt = 1e-4;
-  b2World world(b2Vec2(0.0f, -9.8066f));
-  PairTable pairs;
-  pairs.reset(2);
-  pairs.set(0, 1, 0);
-  const bool enabled = true;
-  PairContactFilter filter(pairs, enabled);
-  std::vector<PairState> states(1);
-  states[0].law = KelvinVoigt{1e5, 600.0, 0.0};
-  states[0].threshold_mps = 0.02;
-  states[0].friction = 0.5f;
-  std::vector<BodyInertia> inertia(2);
-  inertia[0].fixed = true;
-  inertia[1] = BodyInertia{false, 1.0, 0.02, Vec2::Zero(), false, Vec2::Zero()};
-  double time_s = 0.0;
-  PairContactListener listener(pairs, states, inertia, time_s);
-  world.SetContactFilter(&filter);
-  world.SetContactListener(&listener);
-  const Body ground = box2d_test::ground_body();
+  PairState state;
+  state.law = KelvinVoigt{1e5, 600.0, 0.0};
+  state.threshold_mps = 0.02;
+  state.friction = 0.5f;
+  CallbackWorld w(2, state);
+  w.add(box2d_test::ground_body());
   // resting on the ground (its centre 0.2 m above the surface)
-  const Body disk = box2d_test::disk_body("d", 0.2, 1.0, Vec2(0.0, 0.2));
-  std::vector<b2Body*> bodies;
-  int index = 0;
-  for (const Body* b : {&ground, &disk}) {
-    const b2BodyDef def = body_def(*b);
-    b2Body* body = world.CreateBody(&def);
-    FixtureOptions opt;
-    opt.body_index = index++;
-    opt.half_plane_half_length_m = 5.0;
-    add_fixtures(*body, *b, opt);
-    if (!b->fixed) {
-      b2MassData md{1.0f, b2Vec2(0.0f, 0.0f), 0.02f};
-      body->SetMassData(&md);
-      body->SetLinearVelocity(b2Vec2(2.0f, 0.0f));
-    }
-    bodies.push_back(body);
-  }
+  w.add(box2d_test::disk_body("d", 0.2, 1.0, Vec2(0.0, 0.2)))->SetLinearVelocity(b2Vec2(2.0f, 0.0f));
+  b2World& world = w.world;
+  const std::vector<b2Body*>& bodies = w.bodies;
+  double& time_s = w.time_s;
   for (int i = 0; i < 2000; ++i) {
     world.Step(static_cast<float>(dt), 8, 3);
     time_s += dt;
