@@ -205,10 +205,15 @@ Capability Box2dEngine::supports(const Case& c) const {
                       "from closed-form geometry, explicit in time (the force of the state at the "
                       "start of each step); Box2D integrates in float"};
   }
-  return Capability{Support::mapped,
-                    "rigid contact: each contact law is expressed by the restitution it produces "
-                    "(no stiffness, no penetration by design, momentum exchanged within one step); "
-                    "float precision; b2_linearSlop = 0.005 m of overlap is tolerated"};
+  std::string how =
+      "rigid contact: each contact law is expressed by the restitution it produces (no "
+      "stiffness, no penetration by design, momentum exchanged within one step); float precision; "
+      "b2_linearSlop = 0.005 m of overlap is tolerated";
+  if (c.first_pair_with_friction() != nullptr) {
+    how += "; Coulomb friction as Box2D's rigid friction, the pair's coefficient set on each "
+           "contact (b2Contact::SetFriction)";
+  }
+  return Capability{Support::mapped, how};
 }
 
 void Box2dEngine::build(const Case& c, const SettingsOverrides& overrides) {
