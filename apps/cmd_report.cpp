@@ -17,6 +17,7 @@ struct ReportOptionsCli {
   std::string thresholds;
   std::string sweep;
   std::string campaign;
+  std::string impacts;
   bool quiet = false;
 };
 
@@ -27,6 +28,7 @@ int run_report(const ReportOptionsCli& opt) {
   options.thresholds = opt.thresholds;
   options.sweep = opt.sweep;
   options.campaign = opt.campaign;
+  options.impacts = opt.impacts;
   // a misspelt case or engine would otherwise be a check silently never made
   options.check_thresholds = [&opt](const std::vector<Threshold>& t, const ResultsFile& r) {
     check_threshold_names(opt.thresholds, t, r);
@@ -52,6 +54,7 @@ int run_report(const ReportOptionsCli& opt) {
     }
     if (s.campaign_cases > 0) std::printf(", campaign of %zu cases", s.campaign_cases);
     if (s.friction_figures > 0) std::printf(", %zu friction figures", s.friction_figures);
+    if (s.impacts_figures > 0) std::printf(", measured impacts (%zu figures)", s.impacts_figures);
     std::printf(")\n");
   }
   return 0;
@@ -84,6 +87,10 @@ Action add_report_command(CLI::App& app) {
                   "A campaign's file (`planarbench campaign merge`) beside the results: adds its "
                   "campaign section, and the friction curve when it sweeps a pair's friction and "
                   "records slide_acceleration_mps2 (campaigns/friction_curve.toml)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--impacts", opt->impacts,
+                  "A file of `planarbench impacts fit` or `impacts score`: adds the measured-impacts "
+                  "section (such a file may also be given as the results file)")
       ->check(CLI::ExistingFile);
   cmd->add_flag("--quiet,-q", opt->quiet, "Print nothing on success");
   return [opt] { return run_report(*opt); };

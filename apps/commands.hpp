@@ -15,5 +15,6 @@ Action add_check_command(CLI::App& app);
 Action add_report_command(CLI::App& app);
 Action add_sweep_command(CLI::App& app, int argc, char** argv);
 Action add_campaign_command(CLI::App& app, int argc, char** argv);
+Action add_impacts_command(CLI::App& app, int argc, char** argv);
 
 }  // namespace pb::cli

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   const auto report = pb::cli::add_report_command(app);
   const auto sweep = pb::cli::add_sweep_command(app, argc, argv);
   const auto campaign = pb::cli::add_campaign_command(app, argc, argv);
+  const auto impacts = pb::cli::add_impacts_command(app, argc, argv);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -47,6 +48,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("report")) return report();
     if (app.got_subcommand("sweep")) return sweep();
     if (app.got_subcommand("campaign")) return campaign();
+    if (app.got_subcommand("impacts")) return impacts();
   } catch (const pb::InputError& e) {
     std::fprintf(stderr, "planarbench: error: %s\n", e.what());
     return pb::kExitBadInput;

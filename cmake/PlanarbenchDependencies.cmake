@@ -16,6 +16,10 @@ find_package(mujoco 2.2 REQUIRED)
 find_package(box2d 2.4 REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode>=0.16)
+# measured impacts (core/impacts): MAT v5 files through libmatio, fits through NLopt
+pkg_check_modules(MATIO REQUIRED IMPORTED_TARGET matio>=1.5)
+# NLopt: the C library (libnlopt-dev); nlopt.hpp (libnlopt-cxx-dev) is a header-only wrapper of it
+find_package(NLopt 2.7 REQUIRED CONFIG)
 if(PB_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()

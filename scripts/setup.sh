@@ -18,7 +18,10 @@ PACKAGES=(
   libtomlplusplus-dev
   nlohmann-json3-dev
   libfmt-dev
+  libmatio-dev                 # measured impacts: MAT v5 files (core/impacts)
+  libnlopt-cxx-dev             # measured impacts: parameter fits (core/impacts)
   python3-h5py python3-numpy
+  python3-scipy                # tests/impacts: an independent reading of the MAT file
   clang libclang-rt-14-dev     # scripts/fuzz.sh: Clang and libFuzzer's runtime
   lld                          # the asan-ubsan preset links with LLVM's lld (4x GNU ld's speed there)
   slurm-wlm munge              # tests/slurm: campaigns on a local single-node Slurm

@@ -9,6 +9,7 @@
 #include "planarbench/results_file.hpp"
 #include "planarbench/sweep_file.hpp"
 #include "report_campaign.hpp"
+#include "report_impacts.hpp"
 #include "report_figures.hpp"
 #include "report_files.hpp"
 #include "report_friction.hpp"
@@ -115,8 +116,22 @@ ReportSummary write_report(const ReportOptions& options) {
     if (!with_results) report.provenance = sweep_parameters(options.sweep);
   }
   if (sweep_as_results && options.sweep.empty()) add_work_precision(report, options.results);
-  if (results.campaign && !sweep_as_results) {
+  const bool impacts_as_results = results.campaign && internal::is_impacts_table(*results.campaign);
+  if (results.campaign && !sweep_as_results && !impacts_as_results) {
     report.campaign = internal::campaign_section(*results.campaign, options.results.string());
+  }
+  if (impacts_as_results) {
+    report.impacts = internal::impacts_section(*results.campaign, options.results.string());
+  }
+  // a file of `planarbench impacts fit` or `score` beside the results
+  if (!options.impacts.empty()) {
+    const ResultsFile impacts = read_results_file(options.impacts);
+    if (!impacts.campaign || !internal::is_impacts_table(*impacts.campaign)) {
+      throw InputError("--impacts", 0, options.impacts.string(),
+                       "holds no table of measured impacts; give a file of `planarbench impacts "
+                       "fit` or `impacts score`");
+    }
+    report.impacts = internal::impacts_section(*impacts.campaign, options.impacts.string());
   }
   // a campaign beside the results: its section (unless the results are one)
   // and the friction curve
@@ -217,6 +232,11 @@ ReportSummary write_report(const ReportOptions& options) {
     internal::write_text_atomically(options.out_dir / ("figures/" + f.id + ".svg"), f.svg);
     ++summary.svg_files;
   }
+  for (const auto& f : report.impacts.figures) {
+    internal::write_text_atomically(options.out_dir / ("figures/" + f.id + ".svg"), f.svg);
+    ++summary.svg_files;
+  }
+  summary.impacts_figures = report.impacts.figures.size();
   summary.friction_figures = report.friction.figures.size();
   summary.campaign_cases = report.campaign.cases.size();
   summary.work_precision_cases = report.work_precision.size();

@@ -241,6 +241,10 @@ std::string line_plot_svg(const LinePlot& p) {
       }
       const double x = ax.at(l.x[i]);
       const double y = ay.at(l.y[i]);
+      if (l.scatter) {
+        dots += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"1.6\"/>", x, y);
+        continue;
+      }
       path += fmt::format("{}{:.1f},{:.1f} ", pen ? "L" : "M", x, y);
       pen = true;
       if (l.x.size() <= 40) {
@@ -248,7 +252,9 @@ std::string line_plot_svg(const LinePlot& p) {
                             l.colour);
       }
     }
-    if (!path.empty()) {
+    if (l.scatter && !dots.empty()) {
+      svg += fmt::format("<g fill=\"{}\" fill-opacity=\"0.35\">{}</g>\n", l.colour, dots);
+    } else if (!path.empty()) {
       svg += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.6\"/>{}\n",
                          path, l.colour, dots);
     }

@@ -36,6 +36,7 @@ struct LinePlot {
     std::vector<double> y;
     std::vector<double> lo;  // band, empty for none
     std::vector<double> hi;
+    bool scatter = false;  // points only (no line), each drawn however many there are
   };
   std::vector<Line> lines;
 };

@@ -199,6 +199,18 @@ nlohmann::json report_data_json(const Report& report) {
                       {"curve_file", report.friction.curve_file},
                       {"figures", friction_figures},
                       {"curve", table_json(report.friction.curve)}};
+
+  // the measured-impacts section: figures (SVG text) and tables
+  nlohmann::json impact_figures = nlohmann::json::array();
+  for (const auto& f : report.impacts.figures) {
+    impact_figures.push_back({{"id", f.id}, {"title", f.title}, {"svg", f.svg}});
+  }
+  nlohmann::json impact_tables = nlohmann::json::array();
+  for (const auto& t : report.impacts.tables) impact_tables.push_back(table_json(t));
+  data["impacts"] = {{"file", report.impacts.file},
+                     {"note", report.impacts.note},
+                     {"figures", impact_figures},
+                     {"tables", impact_tables}};
   return data;
 }
 

@@ -94,6 +94,16 @@ std::string friction_markdown(const Report& report) {
   return md;
 }
 
+std::string impacts_markdown(const Report& report) {
+  const ImpactsSection& s = report.impacts;
+  std::string md = "## Measured impacts\n\n" + s.note + "\n\n";
+  for (const auto& t : s.tables) {
+    md += "### " + t.title + "\n\n" + t.note + "\n\n" + markdown_table(t) + "\n";
+  }
+  for (const auto& fig : s.figures) md += fmt::format("![{}](figures/{}.svg)\n\n", fig.title, fig.id);
+  return md;
+}
+
 std::vector<FigureView> figure_views(const Figure& f) {
   std::vector<FigureView> views;
   views.push_back(FigureView{"figures/" + f.id + ".svg", f.title, 0.0, f.t_end_s});
@@ -156,6 +166,7 @@ std::string report_markdown(const Report& report) {
   if (!report.work_precision.empty()) md += "- [Work-precision](#work-precision)\n";
   if (!report.campaign.cases.empty()) md += "- [Campaign](#campaign)\n";
   if (!report.friction.figures.empty()) md += "- [Friction](#friction)\n";
+  if (!report.impacts.file.empty()) md += "- [Measured impacts](#measured-impacts)\n";
   for (const auto& t : report.tables) md += fmt::format("- [{}](#{})\n", t.title, anchor(t.title));
   if (!report.results_file.empty()) md += "- [Parameter mapping](#parameter-mapping)\n";
   md += "\n";
@@ -191,6 +202,7 @@ std::string report_markdown(const Report& report) {
   if (!report.work_precision.empty()) md += work_precision_markdown(report);
   if (!report.campaign.cases.empty()) md += campaign_markdown(report);
   if (!report.friction.figures.empty()) md += friction_markdown(report);
+  if (!report.impacts.file.empty()) md += impacts_markdown(report);
   for (const auto& t : report.tables) section_table(md, t);
   // a sweep-only report has no runs to map
   if (report.results_file.empty()) return md;

@@ -144,6 +144,14 @@ struct FrictionSection {
   Table curve;
 };
 
+// the measured-impacts section (report_impacts.hpp)
+struct ImpactsSection {
+  std::string file;  // the fit or score file, "" when none
+  std::string note;
+  std::vector<CampaignFigure> figures;
+  std::vector<Table> tables;
+};
+
 struct Report {
   std::string results_file;                                     // as given on the command line
   std::string thresholds_file;                                  // "" when none
@@ -160,6 +168,7 @@ struct Report {
   Table sweep_provenance;  // /parameters of the sweep file
   CampaignSection campaign;  // empty unless the results file holds a campaign
   FrictionSection friction;  // empty without friction cases or a friction curve
+  ImpactsSection impacts;    // empty without a file of `planarbench impacts`
 };
 
 }  // namespace pb::internal

@@ -60,6 +60,7 @@
     if (hasWorkPrecision()) nav.appendChild(el('a', { href: '#work-precision' }, 'Work-precision'));
     if (hasCampaign()) nav.appendChild(el('a', { href: '#campaign' }, 'Campaign'));
     if (hasFriction()) nav.appendChild(el('a', { href: '#friction' }, 'Friction'));
+    if (hasImpacts()) nav.appendChild(el('a', { href: '#impacts' }, 'Measured impacts'));
     for (const t of data.tables) nav.appendChild(el('a', { href: '#table-' + slug(t.id) }, t.title));
     if (data.results_file) nav.appendChild(el('a', { href: '#mapping' }, 'Parameter mapping'));
   }
@@ -482,6 +483,24 @@
     main.appendChild(sec);
   }
 
+  // ---- measured impacts (SPEC §8) ------------------------------------------
+  function hasImpacts() {
+    return Boolean(data.impacts && data.impacts.file);
+  }
+
+  function renderImpacts(main) {
+    if (!hasImpacts()) return;
+    const im = data.impacts;
+    const sec = el('section', { id: 'impacts' });
+    sec.appendChild(el('h2', {}, 'Measured impacts'));
+    sec.appendChild(el('p', { class: 'note' }, im.note));
+    for (const t of im.tables) renderTable(t, sec, 'h3');
+    for (const f of im.figures) {
+      sec.appendChild(el('div', { class: 'wp-plot', id: 'impacts-' + slug(f.id) }, svgNode(f.svg)));
+    }
+    main.appendChild(sec);
+  }
+
   // ---- parameter mapping ---------------------------------------------------
   function jsonNode(v) {
     if (v === null || typeof v !== 'object') return document.createTextNode(String(v));
@@ -527,6 +546,7 @@
   renderWorkPrecision(main);
   renderCampaign(main);
   renderFriction(main);
+  renderImpacts(main);
   for (const t of data.tables) renderTable(t, main);
   if (data.results_file) renderMappings(main);
 

@@ -28,6 +28,9 @@ struct ReportOptions {
   // pair's friction and records slide_acceleration_mps2
   // (campaigns/friction_curve.toml); empty: none
   std::filesystem::path campaign;
+  // a file of `planarbench impacts fit` or `impacts score`: adds the
+  // measured-impacts section (such a file given as `results` does too); empty: none
+  std::filesystem::path impacts;
   std::filesystem::path out_dir;     // created when missing
   std::filesystem::path thresholds;  // empty: no pass/fail column
   // folder with report_template.html, report.js, report.css and
@@ -60,6 +63,7 @@ struct ReportSummary {
   std::size_t work_precision_cases = 0;  // cases of the sweep file
   std::size_t campaign_cases = 0;        // cases of the campaign table
   std::size_t friction_figures = 0;      // figures of the friction section
+  std::size_t impacts_figures = 0;       // figures of the measured-impacts section
 };
 
 // Writes the report. Throws InputError (exit 2) for a missing or foreign

@@ -1,0 +1,396 @@
+// planarbench impacts: measured impacts (SPEC §8). `fit` identifies each
+// engine's contact parameters on a file of impacts (k-fold cross-validated,
+// then on the whole file), `score` judges frozen parameters on another file,
+// `merge` assembles a fit run as shards (scripts/slurm/submit_impacts.sh).
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include "campaign_plan.hpp"
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "impact_models.hpp"
+#include "impact_tasks.hpp"
+#include "planarbench/errors.hpp"
+#include "planarbench/impacts/impact_data.hpp"
+#include "planarbench/output_file.hpp"
+#include "planarbench/results_file.hpp"
+
+namespace pb::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct ImpactsOptions {
+  std::string data;
+  std::string engine = "all";
+  std::string out;
+  std::string work;
+  std::string shard;
+  std::string params;
+  int folds = 5;
+  std::uint64_t seed = 23;
+  int max_evaluations = 40;
+  int jobs = 1;
+  bool quiet = false;
+  ResultsProvenance provenance;
+};
+
+// the data, checked: read, its convention measured and printed
+struct LoadedData {
+  ImpactSet set;
+  ConventionCheck convention;
+  ImpactTable table;
+};
+
+LoadedData load_data(const ImpactsOptions& opt) {
+  LoadedData d;
+  d.set = read_impacts(opt.data);
+  const ImpactObject object;
+  d.convention = check_convention(d.set, object);
+  d.table = make_impact_table(d.set, object, d.convention.best().convention);
+  if (!opt.quiet) {
+    std::fprintf(stderr, "impacts: %s: %zu impacts (sha256 %.12s)\n", opt.data.c_str(), d.set.size(),
+                 d.set.sha256.c_str());
+    for (std::size_t k = 0; k < d.convention.fits.size(); ++k) {
+      const ConventionFit& f = d.convention.fits[k];
+      std::fprintf(stderr, "  angular momentum about the contact point, %-44s slope %6.3f  r %6.3f%s\n",
+                   (f.label() + ":").c_str(), f.slope, f.correlation,
+                   static_cast<int>(k) == d.convention.chosen ? "  <- the convention" : "");
+    }
+  }
+  return d;
+}
+
+std::vector<const ImpactModel*> pointers(const std::vector<std::unique_ptr<ImpactModel>>& models) {
+  std::vector<const ImpactModel*> out;
+  for (const auto& m : models) out.push_back(m.get());
+  return out;
+}
+
+const ImpactModel& model_named(const std::vector<std::unique_ptr<ImpactModel>>& models,
+                               const std::string& name) {
+  for (const auto& m : models) {
+    if (m->name() == name) return *m;
+  }
+  throw InputError("--engine", 0, name, "is not among the models of this study");
+}
+
+std::string parameters_text(const ImpactModel& m, const std::vector<double>& values) {
+  std::string s;
+  const auto specs = m.parameters();
+  for (std::size_t j = 0; j < specs.size() && j < values.size(); ++j) {
+    s += fmt::format("{}{} {:.4g}", j ? ", " : "", specs[j].name, values[j]);
+  }
+  return s.empty() ? "-" : s;
+}
+
+nlohmann::ordered_json study_json(const ImpactsOptions& opt, const LoadedData& d,
+                                  const std::vector<std::unique_ptr<ImpactModel>>& models) {
+  nlohmann::ordered_json s;
+  s["data_sha256"] = d.set.sha256;
+  s["impacts"] = d.set.size();
+  s["folds"] = opt.folds;
+  s["seed"] = opt.seed;
+  s["max_evaluations"] = opt.max_evaluations;
+  nlohmann::ordered_json names = nlohmann::ordered_json::array();
+  for (const auto& m : models) names.push_back(m->name());
+  s["models"] = names;
+  return s;
+}
+
+void print_summary(const CampaignTable& t, const char* section) {
+  std::printf("%-24s %-52s %8s %8s %8s %6s %9s\n", "model", "parameters (whole-file fit)",
+              "median", "mean", "p90", "failed", "wall s");
+  for (const auto& m : t.description.at("models")) {
+    std::string params = "-";
+    for (const auto& f : m.at("fits")) {
+      if (f.at("fold").get<int>() != kWholeFile && f.at("fold").get<int>() != kScored) continue;
+      params.clear();
+      const auto& names = m.at("parameters");
+      const auto values = f.at("parameters").get<std::vector<double>>();
+      for (std::size_t j = 0; j < values.size(); ++j) {
+        params += fmt::format("{}{} {:.4g}", j ? ", " : "", names.at(j).at("name").get<std::string>(),
+                              values[j]);
+      }
+    }
+    const auto& s = m.at(section);
+    auto num = [](const nlohmann::ordered_json& v) {
+      return v.is_null() ? std::string("n/a") : fmt::format("{:.4f}", v.get<double>());
+    };
+    std::printf("%-24s %-52s %8s %8s %8s %6d %9.1f\n", m.at("name").get<std::string>().c_str(),
+                params.empty() ? "-" : params.c_str(), num(s.at("eps_median")).c_str(),
+                num(s.at("eps_mean")).c_str(), num(s.at("eps_p90")).c_str(), s.at("failed").get<int>(),
+                m.at("wall_time_s").get<double>());
+  }
+}
+
+void write_study(const ImpactsOptions& opt, CampaignTable table) {
+  ResultsFile r;
+  r.provenance = opt.provenance;
+  r.campaign = std::move(table);
+  write_results_file(opt.out, r);
+}
+
+// runs `tasks`, skipping those already in `work` (when given)
+std::vector<FoldFit> run_tasks(const ImpactsOptions& opt, const LoadedData& d,
+                               const std::vector<std::unique_ptr<ImpactModel>>& models,
+                               const std::vector<ImpactTask>& tasks, const fs::path& work) {
+  const auto folds = impact_folds(d.table.size(), opt.folds, opt.seed);
+  std::vector<FoldFit> out;
+  std::size_t k = 0;
+  for (const ImpactTask& t : tasks) {
+    ++k;
+    if (!work.empty() && task_done(work, t)) {
+      if (!opt.quiet) std::fprintf(stderr, "[%zu/%zu] %s: already done\n", k, tasks.size(), t.label().c_str());
+      continue;
+    }
+    const ImpactModel& m = model_named(models, t.model);
+    FitOptions fo;
+    fo.max_evaluations = opt.max_evaluations;
+    fo.jobs = opt.jobs;
+    if (!opt.quiet && isatty(STDERR_FILENO) != 0) {  // a log gets one line per task
+      fo.progress = [&](int evaluation, double median) {
+        std::fprintf(stderr, "\r[%zu/%zu] %s: evaluation %d, median eps %.4f   ", k, tasks.size(),
+                     t.label().c_str(), evaluation, median);
+      };
+    }
+    FoldFit f = run_fold_fit(m, d.table, folds, t.fold, fo);
+    if (!opt.quiet) {
+      std::fprintf(stderr, "%s[%zu/%zu] %s: %s, median eps %.4f after %d evaluations (%.1f s)\n",
+                   fo.progress ? "\r" : "", k,
+                   tasks.size(), t.label().c_str(), parameters_text(m, f.fit.parameters).c_str(),
+                   f.fit.objective, f.fit.evaluations, f.wall_time_s);
+    }
+    if (!work.empty()) write_task(work, t, f);
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
+CampaignTable assemble_fit(const ImpactsOptions& opt, const LoadedData& d,
+                           const std::vector<std::unique_ptr<ImpactModel>>& models,
+                           const std::vector<FoldFit>& fits) {
+  ImpactStudyHeader h;
+  h.kind = "impacts_fit";
+  h.data = &d.set;
+  h.convention = &d.convention;
+  h.folds = opt.folds;
+  h.seed = opt.seed;
+  h.command_line = opt.provenance.command_line;
+  return impact_study_table(h, pointers(models), d.table, fits);
+}
+
+int run_fit(const ImpactsOptions& opt) {
+  check_jobs(opt.jobs);
+  if (opt.folds < 2 || opt.folds > 20) {
+    throw InputError("--folds", 0, std::to_string(opt.folds), "must be in [2, 20]");
+  }
+  if (opt.max_evaluations < 1 || opt.max_evaluations > 10000) {
+    throw InputError("--max-evaluations", 0, std::to_string(opt.max_evaluations), "must be in [1, 10000]");
+  }
+  if (opt.shard.empty() == opt.out.empty()) {
+    throw InputError("impacts fit", 0, "--out, --shard",
+                     "give --out FILE (the whole fit here) or --shard K/N with --work DIR (one "
+                     "shard; `impacts merge DIR` writes the file)");
+  }
+  if (!opt.shard.empty() && opt.work.empty()) {
+    throw InputError("--shard", 0, opt.shard, "needs --work DIR, the folder the shards share");
+  }
+  if (!opt.out.empty()) {
+    check_output_file("--out", opt.out);
+    check_not_an_input("--out", opt.out, {opt.data});
+  }
+  const LoadedData d = load_data(opt);
+  const auto models = impact_models(opt.engine, !d.set.models.empty());
+  std::vector<std::string> names;
+  for (const auto& m : models) names.push_back(m->name());
+  std::vector<ImpactTask> tasks = impact_tasks(names, opt.folds);
+  fs::path work = opt.work;
+  if (!work.empty()) prepare_work_folder(work, study_json(opt, d, models));
+  if (!opt.shard.empty()) {
+    const auto [k, n] = parse_shard(opt.shard, "--shard");
+    tasks = shard_tasks(tasks, k, n);
+    (void)run_tasks(opt, d, models, tasks, work);
+    if (!opt.quiet) std::fprintf(stderr, "shard %d/%d: %zu tasks in %s\n", k, n, tasks.size(), opt.work.c_str());
+    return kExitOk;
+  }
+  std::vector<FoldFit> fits = run_tasks(opt, d, models, tasks, work);
+  if (!work.empty()) {  // some tasks came from the folder
+    fits.clear();
+    for (const ImpactTask& t : tasks) fits.push_back(read_task(work, t));
+  }
+  CampaignTable table = assemble_fit(opt, d, models, fits);
+  if (!opt.quiet) print_summary(table, "cross_validated");
+  write_study(opt, std::move(table));
+  if (!opt.quiet) std::fprintf(stderr, "wrote %s\n", opt.out.c_str());
+  return kExitOk;
+}
+
+int run_merge(const ImpactsOptions& opt) {
+  check_output_file("--out", opt.out);
+  const nlohmann::json study = read_study(opt.work);
+  const LoadedData d = load_data(opt);
+  if (study.at("data_sha256").get<std::string>() != d.set.sha256) {
+    throw InputError(opt.data, 0, "--data",
+                     fmt::format("has sha256 {}, but the shards in {} fitted a file of sha256 {}",
+                                 d.set.sha256, opt.work, study.at("data_sha256").get<std::string>()));
+  }
+  ImpactsOptions o = opt;
+  o.folds = study.at("folds").get<int>();
+  o.seed = study.at("seed").get<std::uint64_t>();
+  std::vector<std::string> names = study.at("models").get<std::vector<std::string>>();
+  std::vector<std::string> engines;
+  for (const std::string& n : names) {
+    const auto& known = impact_engine_names();
+    if (std::find(known.begin(), known.end(), n) != known.end()) engines.push_back(n);
+  }
+  const auto models = impact_models(fmt::format("{}", fmt::join(engines, ",")), !d.set.models.empty());
+  std::vector<FoldFit> fits;
+  std::vector<std::string> missing;
+  for (const ImpactTask& t : impact_tasks(names, o.folds)) {
+    if (!task_done(opt.work, t)) {
+      missing.push_back(t.label());
+      continue;
+    }
+    fits.push_back(read_task(opt.work, t));
+  }
+  if (!missing.empty()) {
+    throw InputError(opt.work, 0, "tasks",
+                     fmt::format("{} of the study's tasks have not finished: {} (run their shards "
+                                 "again: finished tasks are kept)",
+                                 missing.size(), fmt::join(missing, ", ")));
+  }
+  CampaignTable table = assemble_fit(o, d, models, fits);
+  if (!opt.quiet) print_summary(table, "cross_validated");
+  write_study(opt, std::move(table));
+  if (!opt.quiet) std::fprintf(stderr, "wrote %s\n", opt.out.c_str());
+  return kExitOk;
+}
+
+int run_score(const ImpactsOptions& opt) {
+  check_jobs(opt.jobs);
+  check_output_file("--out", opt.out);
+  check_not_an_input("--out", opt.out, {opt.data, opt.params});
+  const ResultsFile fit_file = read_results_file(opt.params);
+  if (!fit_file.campaign) {
+    throw InputError(opt.params, 0, "/campaign", "missing: a fit file of `planarbench impacts fit` is expected");
+  }
+  const FrozenParameters frozen = frozen_parameters(*fit_file.campaign, opt.params);
+  const LoadedData d = load_data(opt);
+  if (!opt.quiet && frozen.data_sha256 == d.set.sha256) {
+    std::fprintf(stderr,
+                 "impacts: note: %s is the file the parameters were fitted to: these scores are "
+                 "in-sample (labelled so), not predictions\n",
+                 opt.data.c_str());
+  }
+  std::vector<std::string> engines;
+  for (const auto& [name, values] : frozen.models) {
+    const auto& known = impact_engine_names();
+    if (std::find(known.begin(), known.end(), name) != known.end()) engines.push_back(name);
+  }
+  auto all = impact_models(fmt::format("{}", fmt::join(engines, ",")), !d.set.models.empty());
+  std::vector<std::unique_ptr<ImpactModel>> models;
+  std::vector<FoldFit> fits;
+  for (auto& m : all) {
+    const std::vector<double>* values = nullptr;
+    for (const auto& [name, v] : frozen.models) {
+      if (name == m->name()) values = &v;
+    }
+    if (values == nullptr && m->kind() != "stored") continue;  // not in the fit file
+    const std::vector<double> none;
+    if (values != nullptr && values->size() != m->parameters().size()) {
+      throw InputError(opt.params, 0, m->name(),
+                       fmt::format("has {} parameters, the model takes {}", values->size(),
+                                   m->parameters().size()));
+    }
+    FoldFit f = score_model(*m, d.table, values ? *values : none, opt.jobs);
+    if (!opt.quiet) std::fprintf(stderr, "%s: scored %zu impacts (%.1f s)\n", m->name().c_str(), f.outcomes.size(), f.wall_time_s);
+    fits.push_back(std::move(f));
+    models.push_back(std::move(m));
+  }
+  ImpactStudyHeader h;
+  h.kind = "impacts_score";
+  h.data = &d.set;
+  h.convention = &d.convention;
+  h.command_line = opt.provenance.command_line;
+  h.in_sample = frozen.data_sha256 == d.set.sha256;
+  h.parameters_from = {{"path", opt.params},
+                       {"data_path", frozen.data_path},
+                       {"data_sha256", frozen.data_sha256}};
+  CampaignTable table = impact_study_table(h, pointers(models), d.table, fits);
+  if (!opt.quiet) print_summary(table, "scored");
+  write_study(opt, std::move(table));
+  if (!opt.quiet) std::fprintf(stderr, "wrote %s\n", opt.out.c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+Action add_impacts_command(CLI::App& app, int argc, char** argv) {
+  auto opt = std::make_shared<ImpactsOptions>();
+  opt->provenance = provenance(argc, argv);
+  auto* cmd = app.add_subcommand(
+      "impacts",
+      "Measured impacts (a MAT v5 file of planar impacts, e.g. the MCube ellipse drops): fit each "
+      "engine's contact parameters (cross-validated), score frozen parameters on another file");
+  cmd->require_subcommand(1);
+  auto data_option = [&](CLI::App* c) {
+    c->add_option("--data", opt->data,
+                  "MAT v5 file of impacts: data.states_i, data.states_f, data.n, data.d, data.drop "
+                  "(and optionally v_models), as ../shared/data/mcube/README.md describes")
+        ->required();
+    c->add_flag("--quiet,-q", opt->quiet, "No progress and no summary");
+  };
+
+  auto* fit = cmd->add_subcommand(
+      "fit",
+      "Fit every engine's contact parameters (Kelvin-Voigt K, damping ratio, Coulomb mu) and the "
+      "rigid baselines by NLopt's simplex, minimising the median error: per model one fit per "
+      "cross-validation fold (judged on the fold held out) and one on the whole file (the "
+      "parameters `impacts score` uses)");
+  data_option(fit);
+  fit->add_option("--engine", opt->engine,
+                  "reference, reference_exact, mujoco, box2d, ode, all, or a comma-separated list "
+                  "(the baselines and the file's stored predictions are always included)")
+      ->default_val("all");
+  fit->add_option("--out", opt->out, "Fit file to write (HDF5, written atomically)");
+  fit->add_option("--folds", opt->folds, "Cross-validation folds, in [2, 20]")->default_val(5);
+  fit->add_option("--seed", opt->seed, "Seed of the fold split")->default_val(23);
+  fit->add_option("--max-evaluations", opt->max_evaluations,
+                  "Objective evaluations per fit (each runs every impact fitted to)")
+      ->default_val(40);
+  fit->add_option("--jobs,-j", opt->jobs, "Worker threads (Slurm: $SLURM_CPUS_PER_TASK)")->default_val(1);
+  fit->add_option("--shard", opt->shard,
+                  "Run only shard K of N (0-based) of the fit's tasks into --work; `impacts merge` "
+                  "assembles the file");
+  fit->add_option("--work", opt->work,
+                  "Folder of finished tasks (resumable: a task already there is not run again)");
+
+  auto* merge = cmd->add_subcommand("merge", "Assemble the fit file of a fit run as shards");
+  merge->add_option("DIR", opt->work, "The shards' --work folder")->required()->check(CLI::ExistingDirectory);
+  data_option(merge);
+  merge->add_option("--out", opt->out, "Fit file to write (HDF5, written atomically)")->required();
+
+  auto* score = cmd->add_subcommand(
+      "score", "Score the parameters of a fit file, frozen, on a file of impacts (no refitting)");
+  data_option(score);
+  score->add_option("--params", opt->params, "Fit file written by `impacts fit` or `impacts merge`")
+      ->required()
+      ->check(CLI::ExistingFile);
+  score->add_option("--out", opt->out, "Score file to write (HDF5, written atomically)")->required();
+  score->add_option("--jobs,-j", opt->jobs, "Worker threads")->default_val(1);
+
+  return [opt, fit, merge, score]() {
+    if (fit->parsed()) return run_fit(*opt);
+    if (merge->parsed()) return run_merge(*opt);
+    if (score->parsed()) return run_score(*opt);
+    return static_cast<int>(kExitBadInput);
+  };
+}
+
+}  // namespace pb::cli

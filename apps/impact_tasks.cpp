@@ -1,0 +1,105 @@
+#include "impact_tasks.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "planarbench/errors.hpp"
+
+namespace pb::cli {
+
+namespace fs = std::filesystem;
+
+std::string ImpactTask::file_name() const {
+  return fold == kWholeFile ? model + ".all.json" : fmt::format("{}.{}.json", model, fold);
+}
+
+std::string ImpactTask::label() const {
+  return fold == kWholeFile ? model + " whole file" : fmt::format("{} fold {}", model, fold);
+}
+
+std::vector<ImpactTask> impact_tasks(const std::vector<std::string>& models, int folds) {
+  std::vector<ImpactTask> out;
+  for (const std::string& m : models) {
+    for (int f = 0; f < folds; ++f) out.push_back({m, f});
+    out.push_back({m, kWholeFile});
+  }
+  return out;
+}
+
+std::vector<ImpactTask> shard_tasks(const std::vector<ImpactTask>& all, int k, int n) {
+  std::vector<ImpactTask> out;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (static_cast<int>(i % static_cast<std::size_t>(n)) == k) out.push_back(all[i]);
+  }
+  return out;
+}
+
+namespace {
+
+nlohmann::json read_json(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path.string(), 0, "", "cannot be read");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(path.string(), 0, "", fmt::format("is not valid JSON ({})", e.what()));
+  }
+}
+
+void write_atomically(const fs::path& path, const std::string& text) {
+  const fs::path tmp = path.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    out << text;
+    if (!out.flush()) throw InputError(tmp.string(), 0, "", "cannot be written");
+  }
+  fs::rename(tmp, path);
+}
+
+}  // namespace
+
+void prepare_work_folder(const fs::path& work, const nlohmann::ordered_json& study) {
+  std::error_code ec;
+  fs::create_directories(work / "tasks", ec);
+  if (ec) throw InputError(work.string(), 0, "--work", "cannot be made: " + ec.message());
+  const fs::path file = work / "study.json";
+  if (!fs::exists(file)) {
+    write_atomically(file, study.dump(2) + "\n");
+    return;
+  }
+  const nlohmann::json have = read_json(file);
+  for (const auto& [key, value] : study.items()) {
+    if (!have.contains(key) || have.at(key) != nlohmann::json(value)) {
+      throw InputError(file.string(), 0, key,
+                       fmt::format("is {} in the folder, {} in this command: the folder holds "
+                                   "another study (use a new --work folder)",
+                                   have.contains(key) ? have.at(key).dump() : "missing", value.dump()));
+    }
+  }
+}
+
+nlohmann::json read_study(const fs::path& work) { return read_json(work / "study.json"); }
+
+bool task_done(const fs::path& work, const ImpactTask& t) {
+  return fs::exists(work / "tasks" / t.file_name());
+}
+
+void write_task(const fs::path& work, const ImpactTask& t, const FoldFit& f) {
+  write_atomically(work / "tasks" / t.file_name(), fold_fit_json(f).dump() + "\n");
+}
+
+FoldFit read_task(const fs::path& work, const ImpactTask& t) {
+  const fs::path path = work / "tasks" / t.file_name();
+  try {
+    return fold_fit_from_json(read_json(path));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(path.string(), 0, "", fmt::format("is not a task of `impacts fit` ({})", e.what()));
+  } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const InputError*>(&e) != nullptr) throw;
+    throw InputError(path.string(), 0, "", e.what());
+  }
+}
+
+}  // namespace pb::cli

@@ -1,0 +1,39 @@
+// One measured impact as a case (SPEC §8): the ellipse over horizontal
+// ground, started kLeadTime_s before the touch on the ballistic arc that
+// reaches the measured pre-impact state (angle, velocities) at the touch, with
+// the contact law whose parameters are being fitted.
+#pragma once
+
+#include "planarbench/case.hpp"
+#include "planarbench/impacts/impact_object.hpp"
+
+namespace pb {
+
+// s: the flight before the touch. 1 ms starts the lowest point 2.2-2.9 mm
+// above the ground at the dataset's speeds: ten steps of a 1e-4 s engine, and
+// more than the 0.3 mm by which a spin of 30 rad/s can move it.
+inline constexpr double kLeadTime_s = 1e-3;
+// s: how long a run may last; the softest law fitted (K = 1e3 N/m) rings for
+// ~15 ms at the ellipse's smallest effective mass
+inline constexpr double kImpactRunLimit_s = 0.06;
+
+// The parameters of the contact law that every engine is fitted with: the
+// case's Kelvin-Voigt law (paper eq. 1), each engine expressing it in its own
+// model (mapping() says how), and the pair's Coulomb coefficient (SPEC §7).
+struct ImpactLaw {
+  double stiffness_n_per_m = 1e4;  // N/m, K
+  double damping_ratio = 0.2;      // -, zeta: c = 2 zeta sqrt(K m), m the object's mass
+  double friction = 0.2;           // -, Coulomb mu
+};
+
+// The case of one impact; `outline_points` of the ellipse (the reference and
+// every outline-based engine; 180 = the paper's).
+[[nodiscard]] Case impact_case(const ImpactObject& o, const ImpactState& at_touch,
+                               const ImpactLaw& law, int outline_points = 180);
+
+// m, the gap between the ellipse and the ground at t in [0, kLeadTime_s] of the
+// ballistic arc (positive: apart); impact_case refuses a state whose arc
+// touches before kLeadTime_s.
+[[nodiscard]] double ballistic_gap(const ImpactObject& o, const ImpactState& at_touch, double t_s);
+
+}  // namespace pb

@@ -1,0 +1,170 @@
+#include "planarbench/impacts/impact_model.hpp"
+
+#include <fmt/format.h>
+
+#include "planarbench/impacts/impact_case.hpp"
+#include "planarbench/impacts/rigid_impact.hpp"
+
+namespace pb {
+
+ImpactTable make_impact_table(const ImpactSet& set, const ImpactObject& o, AngleConvention c) {
+  ImpactTable t;
+  t.object = o;
+  t.convention = c;
+  t.stored = set.models;
+  t.drop = set.drop;
+  t.before.reserve(set.size());
+  t.after.reserve(set.size());
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    t.before.push_back(to_model(set.pre[i], c));
+    ImpactState after = to_model(set.post[i], c);
+    after.angle_rad = t.before.back().angle_rad;  // the impact's configuration
+    t.after.push_back(after);
+  }
+  return t;
+}
+
+namespace {
+
+// ---- engines -----------------------------------------------------------------
+
+class EnginePredictor final : public ImpactPredictor {
+ public:
+  EnginePredictor(const EngineModelSpec& spec) : spec_(spec), engine_(spec.factory()) {
+    for (const auto& [key, value] : spec.settings) {
+      overrides_.set(key, value, SettingSource{"impacts", 0});
+    }
+  }
+  ImpactOutcome predict(const ImpactTable& table, std::size_t i,
+                        const std::vector<double>& p) override {
+    const ImpactLaw law{p[0], p[1], p[2]};
+    const Case c = impact_case(table.object, table.before[i], law, spec_.outline_points);
+    return simulate_impact(*engine_, c, overrides_, table.object);
+  }
+
+ private:
+  const EngineModelSpec& spec_;
+  std::unique_ptr<Engine> engine_;
+  SettingsOverrides overrides_;
+};
+
+class EngineModel final : public ImpactModel {
+ public:
+  explicit EngineModel(EngineModelSpec spec) : spec_(std::move(spec)) {}
+  std::string name() const override { return spec_.name; }
+  std::string kind() const override { return "engine"; }
+  std::string description() const override { return spec_.representation; }
+  std::string version() const override { return spec_.factory()->version(); }
+  std::vector<ImpactParameter> parameters() const override {
+    ImpactParameter k{"stiffness_n_per_m", "N/m", 1e3, 1e6, 3e4, true,
+                      "K of the Kelvin-Voigt law (contact time ~ pi sqrt(m_eff / K))"};
+    if (!spec_.fit_stiffness) {
+      k.lower = k.upper = k.start;
+      k.doc = "K of the Kelvin-Voigt law: not fitted, the engine's contact is rigid";
+    }
+    return {k,
+            {"damping_ratio", "-", 0.0, 1.0, 0.15, false,
+             "zeta of the Kelvin-Voigt law, c = 2 zeta sqrt(K m): sets the restitution"},
+            {"friction", "-", 0.0, 1.0, 0.2, false, "the pair's Coulomb coefficient mu"}};
+  }
+  std::unique_ptr<ImpactPredictor> predictor() const override {
+    return std::make_unique<EnginePredictor>(spec_);
+  }
+
+ private:
+  EngineModelSpec spec_;
+};
+
+// ---- the project's baselines ---------------------------------------------------
+
+class RigidPredictor final : public ImpactPredictor {
+ public:
+  explicit RigidPredictor(bool naive) : naive_(naive) {}
+  ImpactOutcome predict(const ImpactTable& table, std::size_t i,
+                        const std::vector<double>& p) override {
+    ImpactOutcome out;
+    out.after = naive_ ? naive_bounce(table.before[i], p[0])
+                       : rigid_impact(table.object, table.before[i], p[0], p[1]);
+    return out;
+  }
+
+ private:
+  bool naive_;
+};
+
+class RigidModel final : public ImpactModel {
+ public:
+  explicit RigidModel(bool naive) : naive_(naive) {}
+  std::string name() const override { return naive_ ? "naive_bounce" : "rigid"; }
+  std::string kind() const override { return "baseline"; }
+  std::string description() const override {
+    return naive_ ? "x' and theta' kept, y' -> -e y'"
+                  : "rigid impact at the contact point: Newton restitution, Coulomb friction "
+                    "with a stick check";
+  }
+  std::vector<ImpactParameter> parameters() const override {
+    std::vector<ImpactParameter> p = {
+        {"restitution", "-", 0.0, 1.0, 0.5, false, "Newton's e at the contact point"}};
+    if (!naive_) p.push_back({"friction", "-", 0.0, 1.0, 0.2, false, "Coulomb mu"});
+    return p;
+  }
+  std::unique_ptr<ImpactPredictor> predictor() const override {
+    return std::make_unique<RigidPredictor>(naive_);
+  }
+
+ private:
+  bool naive_;
+};
+
+// ---- the dataset's stored predictions ------------------------------------------
+
+class StoredPredictor final : public ImpactPredictor {
+ public:
+  explicit StoredPredictor(std::size_t k) : k_(k) {}
+  ImpactOutcome predict(const ImpactTable& table, std::size_t i,
+                        const std::vector<double>& /*p*/) override {
+    ImpactOutcome out;
+    if (table.stored.empty()) {
+      out.failure = "the file has no v_models";
+      return out;
+    }
+    const auto& row = table.stored[i];
+    out.after = table.before[i];
+    out.after.velocity_mps = Vec2(row[3 * k_], row[3 * k_ + 1]);
+    out.after.angular_velocity_radps = table.convention.rate_sign * row[3 * k_ + 2];
+    return out;
+  }
+
+ private:
+  std::size_t k_;
+};
+
+class StoredModel final : public ImpactModel {
+ public:
+  explicit StoredModel(std::size_t k) : k_(k) {}
+  std::string name() const override { return std::string("stored_") + kStoredModelNames[k_]; }
+  std::string kind() const override { return "stored"; }
+  std::string description() const override {
+    return fmt::format("the dataset's own prediction ({}), as given in v_models", kStoredModelNames[k_]);
+  }
+  std::vector<ImpactParameter> parameters() const override { return {}; }
+  std::unique_ptr<ImpactPredictor> predictor() const override {
+    return std::make_unique<StoredPredictor>(k_);
+  }
+
+ private:
+  std::size_t k_;
+};
+
+}  // namespace
+
+std::unique_ptr<ImpactModel> engine_impact_model(EngineModelSpec spec) {
+  return std::make_unique<EngineModel>(std::move(spec));
+}
+std::unique_ptr<ImpactModel> rigid_impact_model() { return std::make_unique<RigidModel>(false); }
+std::unique_ptr<ImpactModel> naive_bounce_model() { return std::make_unique<RigidModel>(true); }
+std::unique_ptr<ImpactModel> stored_impact_model(std::size_t k) {
+  return std::make_unique<StoredModel>(k);
+}
+
+}  // namespace pb

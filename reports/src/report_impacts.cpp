@@ -1,0 +1,241 @@
+#include "report_impacts.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "report_campaign.hpp"
+#include "report_svg.hpp"
+
+namespace pb::internal {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string number(const Json& v, const char* format = "{:.4f}") {
+  return v.is_null() ? std::string("n/a") : fmt::format(fmt::runtime(format), v.get<double>());
+}
+
+std::string parameters_text(const Json& model, const Json& values) {
+  std::string s;
+  const auto& specs = model.at("parameters");
+  for (std::size_t j = 0; j < values.size() && j < specs.size(); ++j) {
+    s += fmt::format("{}{} = {:.4g}", j ? ", " : "", specs.at(j).at("name").get<std::string>(),
+                     values.at(j).get<double>());
+  }
+  return s.empty() ? "-" : s;
+}
+
+// the fit whose parameters the model is reported with: the whole-file fit, or the scored one
+const Json* headline_fit(const Json& model) {
+  for (const auto& f : model.at("fits")) {
+    const int fold = f.at("fold").get<int>();
+    if (fold == -1 || fold == -2) return &f;
+  }
+  return nullptr;
+}
+
+std::size_t metric_index(const CampaignTable& t, const std::string& name) {
+  for (std::size_t m = 0; m < t.metrics.size(); ++m) {
+    if (t.metrics[m].name == name) return m;
+  }
+  return t.metrics.size();
+}
+
+std::string colour_of(const std::string& model, std::size_t index) {
+  if (model == "reference_exact") return "#17becf";
+  if (model == "rigid") return "#000000";
+  if (model == "naive_bounce") return "#7f7f7f";
+  return engine_colour(model, index);
+}
+
+Table convention_table(const Json& d) {
+  Table t;
+  t.id = "impacts_convention";
+  t.title = "Measured impacts: the angle convention";
+  t.note = fmt::format(
+      "The ground's impulse acts at the contact point, so an impact conserves the angular momentum "
+      "about it. Post-impact momentum fitted against pre-impact over the file, for each sign pair "
+      "of the stored angle and angular velocity (least squares, Pearson r); rule: {}.",
+      d.at("convention").at("rule").get<std::string>());
+  t.columns = {"angle, angular velocity", "slope", "intercept (kg m^2/s)", "r", "convention"};
+  const int chosen = d.at("convention").at("chosen").get<int>();
+  int k = 0;
+  for (const auto& f : d.at("convention").at("fits")) {
+    t.rows.push_back({f.at("label").get<std::string>(), number(f.at("slope"), "{:.3f}"),
+                      number(f.at("intercept"), "{:.3g}"), number(f.at("correlation"), "{:.3f}"),
+                      k == chosen ? "chosen" : ""});
+    t.row_status.push_back(k == chosen ? "pass" : "");
+    ++k;
+  }
+  return t;
+}
+
+}  // namespace
+
+bool is_impacts_table(const CampaignTable& t) {
+  return t.kind == "impacts_fit" || t.kind == "impacts_score";
+}
+
+ImpactsSection impacts_section(const CampaignTable& t, const std::string& file) {
+  ImpactsSection s;
+  s.file = file;
+  const Json& d = t.description;
+  const bool scored = t.kind == "impacts_score";
+  const bool in_sample = scored && d.value("in_sample", false);
+  const char* judged = scored ? "scored" : "cross_validated";
+  const Json& data = d.at("data");
+  s.note = fmt::format(
+      "{} measured impacts of {} (sha256 {}), the MCube ellipse (a = {} m, b = {} m, m = {} kg, "
+      "k = {} m). Each engine runs every impact as a case: the ellipse started on the ballistic "
+      "arc that reaches the measured pre-impact state at the touch, read once the contact has "
+      "ended, carried back ballistically to the touch. Error eps = ||v_pred - v_meas||_M / "
+      "||v_meas - v_pre||_M with M = diag(m, m, m k^2): predicting no impact scores 1. {} The "
+      "stored predictions are the dataset's own, judged as given (its README finds them computed "
+      "in the angle convention that does not conserve the momentum). Wall times on the machine "
+      "in the provenance.",
+      data.at("impacts").get<std::size_t>(), data.at("path").get<std::string>(),
+      data.at("sha256").get<std::string>().substr(0, 16),
+      d.at("object").at("semi_axis_a_m").get<double>(), d.at("object").at("semi_axis_b_m").get<double>(),
+      d.at("object").at("mass_kg").get<double>(), d.at("object").at("gyration_radius_m").get<double>(),
+      scored ? fmt::format("Scored with parameters frozen in {} (fitted to the file of sha256 {}): "
+                           "nothing refitted.",
+                           d.at("parameters_from").at("path").get<std::string>(),
+                           d.at("parameters_from").at("data_sha256").get<std::string>().substr(0, 16))
+             : fmt::format("Parameters fitted by NLopt's simplex minimising the median eps; each "
+                           "impact is judged by the fit of the {}-fold cross-validation that held it "
+                           "out (seed {}), so no model is judged on impacts it was fitted to; the "
+                           "parameters shown are the fit on the whole file.",
+                           d.at("folds").get<int>(), d.at("seed").get<std::uint64_t>()));
+  s.tables.push_back(convention_table(d));
+
+  // the models
+  double rigid_median = std::nan("");
+  for (const auto& m : d.at("models")) {
+    if (m.at("name") == "rigid" && m.contains(judged) && !m.at(judged).at("eps_median").is_null()) {
+      rigid_median = m.at(judged).at("eps_median").get<double>();
+    }
+  }
+  Table models;
+  models.id = "impacts_models";
+  models.title = in_sample ? "Measured impacts: IN-SAMPLE scores (the file the parameters were fitted to: not predictions)"
+                 : scored ? "Measured impacts: frozen parameters scored"
+                          : "Measured impacts: cross-validated";
+  models.note = in_sample ? "eps of every impact of the file the parameters were fitted to: how well the "
+                            "models fit, not how well they predict."
+                : scored ? "eps of every impact of the file, with the fit file's parameters."
+                       : "eps of each impact as predicted by the fold fit that did not see it; "
+                         "parameters: the whole-file fit. x/rigid: the median against the rigid "
+                         "baseline's.";
+  models.columns = {"model", "kind", "representation", "parameters", "eps median", "x rigid",
+                    "eps mean", "eps p90", "|dx'| median (m/s)", "|dy'| median (m/s)",
+                    "|dtheta'| median (rad/s)", "failed", "wall (s)"};
+  for (const auto& m : d.at("models")) {
+    if (!m.contains(judged)) continue;
+    const Json& j = m.at(judged);
+    const Json* fit = headline_fit(m);
+    const double median = j.at("eps_median").is_null() ? std::nan("") : j.at("eps_median").get<double>();
+    models.rows.push_back(
+        {m.at("name").get<std::string>(), m.at("kind").get<std::string>(),
+         m.at("description").get<std::string>(),
+         fit ? parameters_text(m, fit->at("parameters")) : "-", number(j.at("eps_median")),
+         std::isfinite(rigid_median) && std::isfinite(median) ? fmt::format("{:.2f}", median / rigid_median)
+                                                              : "n/a",
+         number(j.at("eps_mean")), number(j.at("eps_p90")), number(j.at("abs_error_vx_median_mps")),
+         number(j.at("abs_error_vy_median_mps")), number(j.at("abs_error_w_median_radps"), "{:.3f}"),
+         fmt::format("{} of {}", j.at("failed").get<int>(), j.at("impacts").get<int>()),
+         fmt::format("{:.1f}", m.at("wall_time_s").get<double>())});
+    models.row_status.push_back(j.at("failed").get<int>() > 0 ? "fail" : "");
+  }
+  s.tables.push_back(std::move(models));
+
+  if (!scored) {
+    Table fits;
+    fits.id = "impacts_fits";
+    fits.title = "Measured impacts: every fit";
+    fits.note = "Per model and fold: the parameters found, the median eps on the impacts fitted to "
+                "(the objective), NLopt's evaluations and why it stopped. Fold \"all\": the whole "
+                "file.";
+    fits.columns = {"model", "fold", "parameters", "objective", "evaluations", "stop", "wall (s)"};
+    for (const auto& m : d.at("models")) {
+      if (m.at("parameters").empty()) continue;  // the stored predictions: nothing fitted
+      for (const auto& f : m.at("fits")) {
+        const int fold = f.at("fold").get<int>();
+        fits.rows.push_back({m.at("name").get<std::string>(), fold < 0 ? "all" : std::to_string(fold),
+                             parameters_text(m, f.at("parameters")), number(f.at("objective")),
+                             std::to_string(f.at("evaluations").get<int>()),
+                             f.at("stop").get<std::string>(),
+                             fmt::format("{:.1f}", f.at("wall_time_s").get<double>())});
+      }
+    }
+    s.tables.push_back(std::move(fits));
+  }
+
+  // figures: the CDF of eps, predicted against measured
+  const std::size_t eps_col = metric_index(t, "eps");
+  std::map<std::string, std::vector<const CampaignRun*>> rows;
+  std::vector<std::string> order;
+  for (const auto& r : t.runs) {
+    if (rows.find(r.engine) == rows.end()) order.push_back(r.engine);
+    rows[r.engine].push_back(&r);
+  }
+  LinePlot cdf;
+  cdf.title = fmt::format("Measured impacts: CDF of eps ({})", scored ? "scored" : "cross-validated");
+  cdf.x_label = "eps";
+  cdf.y_label = "fraction of impacts with a smaller error";
+  std::size_t index = 0;
+  for (const std::string& name : order) {
+    if (name.rfind("stored_", 0) == 0 && name != "stored_drumwright_shell") continue;  // one stands for six
+    std::vector<double> eps;
+    for (const CampaignRun* r : rows[name]) {
+      const double e = r->metrics[eps_col];
+      eps.push_back(std::isfinite(e) ? e : 1e9);  // a failure: off the chart, counted
+    }
+    std::sort(eps.begin(), eps.end());
+    LinePlot::Line line{name, colour_of(name, index++), {}, {}, {}, {}};
+    for (std::size_t k = 0; k < eps.size(); ++k) {
+      if (eps[k] > 0.6) break;  // beyond 0.6 the models are all wrong: the axis shows the rest
+      line.x.push_back(eps[k]);
+      line.y.push_back(static_cast<double>(k + 1) / static_cast<double>(eps.size()));
+    }
+    cdf.lines.push_back(std::move(line));
+  }
+  s.figures.push_back({"impacts_eps_cdf", cdf.title, line_plot_svg(cdf)});
+
+  const std::array<std::array<const char*, 4>, 3> components = {{
+      {"vx", "x'", "meas_vx_mps", "pred_vx_mps"},
+      {"vy", "y'", "meas_vy_mps", "pred_vy_mps"},
+      {"w", "theta'", "meas_w_radps", "pred_w_radps"},
+  }};
+  for (const auto& c : components) {
+    const std::size_t meas = metric_index(t, c[2]);
+    const std::size_t pred = metric_index(t, c[3]);
+    LinePlot plot;
+    plot.title = fmt::format("Measured impacts: predicted against measured {} after the impact", c[1]);
+    plot.x_label = fmt::format("measured {} ({})", c[1], c[0][0] == 'w' ? "rad/s" : "m/s");
+    plot.y_label = fmt::format("predicted {}", c[1]);
+    double lo = 1e300, hi = -1e300;
+    index = 0;
+    for (const std::string& name : order) {
+      if (name.rfind("stored_", 0) == 0 || name == "naive_bounce") continue;
+      LinePlot::Line line{name, colour_of(name, index++), {}, {}, {}, {}, true};
+      for (const CampaignRun* r : rows[name]) {
+        line.x.push_back(r->metrics[meas]);
+        line.y.push_back(r->metrics[pred]);
+        if (std::isfinite(r->metrics[meas])) {
+          lo = std::min(lo, r->metrics[meas]);
+          hi = std::max(hi, r->metrics[meas]);
+        }
+      }
+      plot.lines.push_back(std::move(line));
+    }
+    if (lo < hi) plot.lines.push_back({"predicted = measured", "#000000", {lo, hi}, {lo, hi}, {}, {}});
+    s.figures.push_back({std::string("impacts_predicted_") + c[0], plot.title, line_plot_svg(plot)});
+  }
+  return s;
+}
+
+}  // namespace pb::internal

@@ -1,0 +1,183 @@
+// Tests for apps/cmd_impacts.cpp, run as a user runs it: `impacts fit` on a
+// file the test writes, `impacts score` of its frozen parameters on another
+// file (no refitting), the shards and their merge (the same bits as one
+// process), determinism, the report's section, and bad input refused with
+// exit 2 naming the variable and leaving no file behind. Files are read back
+// with h5py alone (tests/impacts/read_study.py).
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "child_process.hpp"
+#include "planarbench/impacts/impact_data.hpp"
+#include "planarbench/impacts/rigid_impact.hpp"
+#include "synthetic_impacts.hpp"
+
+namespace {
+
+using namespace pb::test;
+
+// 40 impacts made by the rigid law (e = 0.6, mu = 0.2): the engines'
+// fits have something to find, and the rigid baseline finds it exactly
+fs::path impacts_file(const fs::path& dir, const std::string& name, unsigned seed) {
+  const pb::ImpactObject o;
+  const pb::ImpactSet set = synthetic_impacts(40, seed, [&o](const pb::ImpactState& s) {
+    return pb::rigid_impact(o, s, 0.6, 0.2);
+  });
+  const fs::path file = dir / name;
+  pb::write_impacts(file, set);
+  return file;
+}
+
+Finished impacts(const std::string& args) {
+  std::vector<std::string> a = words(args);
+  a.insert(a.begin(), "impacts");
+  return run_planarbench(a);
+}
+
+nlohmann::json read_study(const fs::path& file) {
+  const Finished f = run_shell(std::string(PB_PYTHON) + " " + PB_SOURCE_DIR +
+                               "/tests/impacts/read_study.py " + file.string());
+  EXPECT_EQ(f.exit.code, 0) << f.err;
+  return f.exit.code == 0 ? nlohmann::json::parse(f.err) : nlohmann::json::object();
+}
+
+// a quick study: two cheap engines, 2 folds, 4 evaluations per fit
+const char* kQuick = "--engine box2d,reference_exact --folds 2 --max-evaluations 4 -q";
+
+}  // namespace
+
+TEST(CmdImpacts, FitThenScoreFrozenParametersOnAnotherFile) {
+  const fs::path dir = fresh_dir("fit_score");
+  const fs::path train = impacts_file(dir, "train.mat", 1);
+  const fs::path other = impacts_file(dir, "other.mat", 2);
+  const Finished fit = impacts("fit --data " + train.string() + " --out " + (dir / "fit.h5").string() + " " + kQuick);
+  ASSERT_EQ(fit.exit.code, 0) << fit.err;
+  const nlohmann::json f = read_study(dir / "fit.h5");
+  EXPECT_EQ(f.at("kind"), "impacts_fit");
+  // models: 2 engines + rigid + naive bounce (no v_models in the file: no stored ones)
+  const auto& models = f.at("description").at("models");
+  ASSERT_EQ(models.size(), 4u);
+  // every impact judged once per model, cross-validated
+  EXPECT_EQ(f.at("engine").size(), 4u * 40u);
+  for (const auto& s : f.at("series")) EXPECT_EQ(s, "cross_validated");
+  // the convention of the synthetic file is found: both signs flipped
+  const auto& conv = f.at("description").at("convention");
+  EXPECT_EQ(conv.at("fits").at(conv.at("chosen").get<int>()).at("angle_sign"), -1.0);
+
+  const Finished score = impacts("score --data " + other.string() + " --params " + (dir / "fit.h5").string() +
+                                 " --out " + (dir / "score.h5").string() + " -q");
+  ASSERT_EQ(score.exit.code, 0) << score.err;
+  const nlohmann::json s = read_study(dir / "score.h5");
+  EXPECT_EQ(s.at("kind"), "impacts_score");
+  for (const auto& x : s.at("series")) EXPECT_EQ(x, "scored");
+  // frozen: each model's parameters are the fit file's whole-file fit, and nothing was evaluated
+  for (std::size_t m = 0; m < models.size(); ++m) {
+    const auto& fits = models.at(m).at("fits");
+    const auto& whole = fits.at(fits.size() - 1);
+    ASSERT_EQ(whole.at("fold"), -1);
+    const auto& scored = s.at("description").at("models").at(m);
+    EXPECT_EQ(scored.at("name"), models.at(m).at("name"));
+    EXPECT_EQ(scored.at("fits").at(0).at("parameters"), whole.at("parameters"));
+    EXPECT_EQ(scored.at("fits").at(0).at("evaluations"), 0);
+  }
+  EXPECT_EQ(s.at("description").at("parameters_from").at("data_sha256"),
+            f.at("description").at("data").at("sha256"));
+  // the rigid law made the data: its baseline, frozen, predicts the other file well
+  EXPECT_LT(s.at("description").at("models").at(2).at("scored").at("eps_median").get<double>(), 0.05);
+}
+
+TEST(CmdImpacts, ScoringTheFileFittedToIsLabelledInSample) {
+  const fs::path dir = fresh_dir("in_sample");
+  const fs::path train = impacts_file(dir, "train.mat", 1);
+  ASSERT_EQ(impacts("fit --data " + train.string() + " --out " + (dir / "fit.h5").string() + " " + kQuick).exit.code, 0);
+  const Finished score = impacts("score --data " + train.string() + " --params " + (dir / "fit.h5").string() +
+                                 " --out " + (dir / "score.h5").string());
+  ASSERT_EQ(score.exit.code, 0) << score.err;
+  EXPECT_NE(score.err.find("in-sample"), std::string::npos) << score.err;
+  const nlohmann::json s = read_study(dir / "score.h5");
+  for (const auto& x : s.at("series")) EXPECT_EQ(x, "in_sample");
+  EXPECT_TRUE(s.at("description").at("in_sample").get<bool>());
+}
+
+TEST(CmdImpacts, ShardsMergeToTheBitsOfOneProcessAndRepeatsAreTheSame) {
+  const fs::path dir = fresh_dir("shards");
+  const fs::path train = impacts_file(dir, "train.mat", 3);
+  const std::string data = " --data " + train.string() + " ";
+  ASSERT_EQ(impacts("fit" + data + "--out " + (dir / "one.h5").string() + " " + kQuick).exit.code, 0);
+  ASSERT_EQ(impacts("fit" + data + "--out " + (dir / "again.h5").string() + " " + kQuick + " --jobs 2").exit.code, 0);
+  const std::string work = (dir / "work").string();
+  for (const char* shard : {"0/3", "1/3", "2/3"}) {
+    const Finished r = impacts("fit" + data + "--shard " + shard + " --work " + work + " " + kQuick);
+    ASSERT_EQ(r.exit.code, 0) << shard << ": " << r.err;
+  }
+  // a shard run again does nothing new
+  const Finished again = impacts("fit" + data + "--shard 1/3 --work " + work + " --engine box2d,reference_exact --folds 2 --max-evaluations 4");
+  EXPECT_NE(again.err.find("already done"), std::string::npos) << again.err;
+  const Finished m = impacts("merge " + work + data + "--out " + (dir / "merged.h5").string() + " -q");
+  ASSERT_EQ(m.exit.code, 0) << m.err;
+  EXPECT_EQ(dataset_hashes("same " + (dir / "one.h5").string() + " " + (dir / "merged.h5").string()).exit.code, 0);
+  EXPECT_EQ(dataset_hashes("same " + (dir / "one.h5").string() + " " + (dir / "again.h5").string()).exit.code, 0);
+  // a shard of another study refuses the folder
+  const Finished other = impacts("fit" + data + "--shard 0/3 --work " + work +
+                                 " --engine box2d --folds 3 --max-evaluations 4 -q");
+  EXPECT_EQ(other.exit.code, 2);
+  EXPECT_NE(other.err.find("another study"), std::string::npos) << other.err;
+}
+
+TEST(CmdImpacts, AMergeOfUnfinishedShardsNamesWhatIsMissing) {
+  const fs::path dir = fresh_dir("missing");
+  const fs::path train = impacts_file(dir, "train.mat", 3);
+  const std::string work = (dir / "work").string();
+  ASSERT_EQ(impacts("fit --data " + train.string() + " --shard 0/2 --work " + work + " " + kQuick).exit.code, 0);
+  const Finished m = impacts("merge " + work + " --data " + train.string() + " --out " + (dir / "m.h5").string());
+  EXPECT_EQ(m.exit.code, 2);
+  EXPECT_NE(m.err.find("have not finished"), std::string::npos) << m.err;
+  EXPECT_FALSE(fs::exists(dir / "m.h5"));
+}
+
+TEST(CmdImpacts, BadInputIsRefusedNamingTheVariableAndLeavesNoFile) {
+  const fs::path dir = fresh_dir("bad");
+  std::ofstream(dir / "text.mat") << "not a MAT file\n";
+  const Finished a = impacts("fit --data " + (dir / "text.mat").string() + " --out " + (dir / "a.h5").string());
+  EXPECT_EQ(a.exit.code, 2);
+  EXPECT_NE(a.err.find("text.mat"), std::string::npos) << a.err;
+  EXPECT_NE(a.err.find("not a MAT file"), std::string::npos) << a.err;
+  EXPECT_FALSE(fs::exists(dir / "a.h5"));
+
+  const fs::path train = impacts_file(dir, "train.mat", 1);
+  const Finished b = impacts("fit --data " + train.string() + " --engine mujocoo --out " + (dir / "b.h5").string());
+  EXPECT_EQ(b.exit.code, 2);
+  EXPECT_NE(b.err.find("did you mean 'mujoco'"), std::string::npos) << b.err;
+  EXPECT_FALSE(fs::exists(dir / "b.h5"));
+
+  // a score file is no fit file
+  ASSERT_EQ(impacts("fit --data " + train.string() + " --out " + (dir / "fit.h5").string() + " " + kQuick).exit.code, 0);
+  ASSERT_EQ(impacts("score --data " + train.string() + " --params " + (dir / "fit.h5").string() + " --out " +
+                    (dir / "score.h5").string() + " -q").exit.code, 0);
+  const Finished c = impacts("score --data " + train.string() + " --params " + (dir / "score.h5").string() +
+                             " --out " + (dir / "c.h5").string());
+  EXPECT_EQ(c.exit.code, 2);
+  EXPECT_NE(c.err.find("impacts_fit"), std::string::npos) << c.err;
+  EXPECT_FALSE(fs::exists(dir / "c.h5"));
+
+  const Finished d = impacts("fit --data " + train.string() + " --folds 1 --out " + (dir / "d.h5").string());
+  EXPECT_EQ(d.exit.code, 2);
+  EXPECT_NE(d.err.find("--folds"), std::string::npos) << d.err;
+}
+
+TEST(CmdImpacts, TheReportHasAMeasuredImpactsSection) {
+  const fs::path dir = fresh_dir("report");
+  const fs::path train = impacts_file(dir, "train.mat", 1);
+  ASSERT_EQ(impacts("fit --data " + train.string() + " --out " + (dir / "fit.h5").string() + " " + kQuick).exit.code, 0);
+  const Finished r = run_planarbench({"report", (dir / "fit.h5").string(), "--out", (dir / "report").string()});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  const std::string md = file_bytes(dir / "report" / "report.md");
+  EXPECT_NE(md.find("## Measured impacts"), std::string::npos);
+  EXPECT_NE(md.find("the angle convention"), std::string::npos);
+  EXPECT_NE(md.find("| rigid |"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir / "report" / "figures" / "impacts_eps_cdf.svg"));
+  EXPECT_TRUE(fs::exists(dir / "report" / "figures" / "impacts_predicted_w.svg"));
+  const std::string html = file_bytes(dir / "report" / "report.html");
+  EXPECT_NE(html.find("impacts_models"), std::string::npos);
+}

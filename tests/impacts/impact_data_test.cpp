@@ -1,0 +1,175 @@
+// Tests for core/impacts/src/impact_data.cpp: MAT v5 files of impacts through
+// libmatio, written by the tests themselves (the dataset is never committed)
+// and, where ../shared/data/mcube/ exists, the shared training file. The
+// values a file holds are checked against scipy.io.loadmat's reading
+// (tests/impacts/read_mat.py), an independent reader.
+#include <gtest/gtest.h>
+#include <matio.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "planarbench/errors.hpp"
+#include "planarbench/impacts/impact_data.hpp"
+#include "synthetic_impacts.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path work_dir() {
+  const fs::path d = fs::path(PB_WORK_DIR) / "impact_data";
+  fs::create_directories(d);
+  return d;
+}
+
+pb::ImpactSet small_set() {
+  return pb::test::synthetic_impacts(12, 7, [](const pb::ImpactState& s) {
+    pb::ImpactState after = s;
+    after.velocity_mps.y() *= -0.5;
+    return after;
+  });
+}
+
+// InputError's message for reading `path`
+std::string refusal(const fs::path& path) {
+  try {
+    (void)pb::read_impacts(path);
+  } catch (const pb::InputError& e) {
+    return e.what();
+  }
+  return "(read without error)";
+}
+
+// a MAT file with one struct `data` holding the given double fields
+void write_struct(const fs::path& path, const std::vector<std::pair<const char*, std::vector<std::size_t>>>& fields) {
+  mat_t* mat = Mat_CreateVer(path.string().c_str(), nullptr, MAT_FT_MAT5);
+  ASSERT_NE(mat, nullptr);
+  std::vector<const char*> names;
+  for (const auto& f : fields) names.push_back(f.first);
+  names.push_back(nullptr);
+  std::size_t one[2] = {1, 1};
+  matvar_t* data = Mat_VarCreateStruct2("data", 2, one, names.data());
+  std::vector<std::vector<double>> storage;
+  for (const auto& [name, dims] : fields) {
+    storage.emplace_back(dims[0] * dims[1], 0.5);
+    std::size_t d[2] = {dims[0], dims[1]};
+    Mat_VarSetStructFieldByName(
+        data, name, 0, Mat_VarCreate(name, MAT_C_DOUBLE, MAT_T_DOUBLE, 2, d, storage.back().data(), 0));
+  }
+  ASSERT_EQ(Mat_VarWrite(mat, data, MAT_COMPRESSION_NONE), 0);
+  Mat_VarFree(data);
+  Mat_Close(mat);
+}
+
+}  // namespace
+
+TEST(ImpactData, WhatIsWrittenIsReadBackBitForBit) {
+  pb::ImpactSet set = small_set();
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    std::array<double, 18> row{};
+    for (std::size_t j = 0; j < 18; ++j) row[j] = 0.01 * static_cast<double>(i * 18 + j) - 1.0 / 3.0;
+    set.models.push_back(row);
+  }
+  const fs::path file = work_dir() / "round_trip.mat";
+  pb::write_impacts(file, set);
+  const pb::ImpactSet back = pb::read_impacts(file);
+  ASSERT_EQ(back.size(), set.size());
+  EXPECT_EQ(back.pre, set.pre);
+  EXPECT_EQ(back.post, set.post);
+  EXPECT_EQ(back.drop, set.drop);
+  EXPECT_EQ(back.models, set.models);
+  EXPECT_EQ(back.sha256.size(), 64u);
+  EXPECT_EQ(back.path, file.string());
+}
+
+TEST(ImpactData, ScipyReadsTheWrittenFileAsWritten) {
+  // scipy.io.loadmat is an independent MAT reader: the file is a standard
+  // MAT v5 file, not one only libmatio understands
+  const pb::ImpactSet set = small_set();
+  const fs::path file = work_dir() / "for_scipy.mat";
+  pb::write_impacts(file, set);
+  const fs::path out = work_dir() / "for_scipy.json";
+  const std::string cmd = std::string(PB_PYTHON) + " " + PB_SOURCE_DIR + "/tests/impacts/read_mat.py " +
+                          file.string() + " > " + out.string();
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(out));
+  ASSERT_EQ(j.at("states_i").size(), set.size());
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    for (std::size_t c = 0; c < 6; ++c) {
+      EXPECT_EQ(j.at("states_i").at(i).at(c).get<double>(), set.pre[i][c]);  // exact: repr round-trips
+      EXPECT_EQ(j.at("states_f").at(i).at(c).get<double>(), set.post[i][c]);
+    }
+  }
+  EXPECT_FALSE(j.at("has_v_models").get<bool>());
+}
+
+TEST(ImpactData, TheSharedTrainingFileIsReadAsScipyReadsIt) {
+  const fs::path shared = fs::path(PB_SOURCE_DIR) / "../shared/data/mcube/ellipse_impacts_train.mat";
+  if (!fs::exists(shared)) GTEST_SKIP() << shared << " is not on this machine";
+  const pb::ImpactSet set = pb::read_impacts(shared);
+  ASSERT_EQ(set.size(), 1146u);  // the README's count
+  ASSERT_EQ(set.models.size(), 1146u);
+  const fs::path out = work_dir() / "shared.json";
+  const std::string cmd = std::string(PB_PYTHON) + " " + PB_SOURCE_DIR + "/tests/impacts/read_mat.py " +
+                          shared.string() + " > " + out.string();
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(out));
+  for (std::size_t i = 0; i < set.size(); i += 97) {
+    for (std::size_t c = 0; c < 6; ++c) {
+      EXPECT_EQ(j.at("states_i").at(i).at(c).get<double>(), set.pre[i][c]);
+      EXPECT_EQ(j.at("states_f").at(i).at(c).get<double>(), set.post[i][c]);
+    }
+    EXPECT_EQ(j.at("drop").at(i).get<double>(), set.drop[i]);
+    EXPECT_EQ(j.at("v_models").at(i).at(17).get<double>(), set.models[i][17]);
+  }
+  EXPECT_EQ(j.at("sha256").get<std::string>(), set.sha256);  // hashlib's sha256 of the bytes
+}
+
+TEST(ImpactData, AFileOfAnotherLayoutIsRefusedNamingTheVariable) {
+  const fs::path dir = work_dir();
+  // not a MAT file at all
+  std::ofstream(dir / "text.mat") << "hello\n";
+  EXPECT_NE(refusal(dir / "text.mat").find("is not a MAT file"), std::string::npos) << refusal(dir / "text.mat");
+  // no such file
+  EXPECT_NE(refusal(dir / "missing.mat").find("is not a readable file"), std::string::npos);
+  // states_i with 5 columns
+  write_struct(dir / "five.mat", {{"states_i", {4, 5}}, {"states_f", {4, 6}}, {"n", {4, 3}}, {"d", {4, 3}}, {"drop", {1, 4}}});
+  const std::string five = refusal(dir / "five.mat");
+  EXPECT_NE(five.find("data.states_i"), std::string::npos) << five;
+  EXPECT_NE(five.find("4 x 6"), std::string::npos) << five;
+  EXPECT_NE(five.find("4 x 5"), std::string::npos) << five;
+  // states_f missing
+  write_struct(dir / "nof.mat", {{"states_i", {4, 6}}, {"n", {4, 3}}, {"d", {4, 3}}, {"drop", {1, 4}}});
+  const std::string nof = refusal(dir / "nof.mat");
+  EXPECT_NE(nof.find("data.states_f"), std::string::npos) << nof;
+  EXPECT_NE(nof.find("missing"), std::string::npos) << nof;
+  // drop of the wrong length
+  write_struct(dir / "drop.mat", {{"states_i", {4, 6}}, {"states_f", {4, 6}}, {"n", {4, 3}}, {"d", {4, 3}}, {"drop", {1, 3}}});
+  EXPECT_NE(refusal(dir / "drop.mat").find("data.drop"), std::string::npos) << refusal(dir / "drop.mat");
+  // no struct named data
+  {
+    mat_t* mat = Mat_CreateVer((dir / "nodata.mat").string().c_str(), nullptr, MAT_FT_MAT5);
+    double v[1] = {1.0};
+    std::size_t dims[2] = {1, 1};
+    matvar_t* x = Mat_VarCreate("x", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, v, 0);
+    Mat_VarWrite(mat, x, MAT_COMPRESSION_NONE);
+    Mat_VarFree(x);
+    Mat_Close(mat);
+  }
+  const std::string nodata = refusal(dir / "nodata.mat");
+  EXPECT_NE(nodata.find("data"), std::string::npos) << nodata;
+  EXPECT_NE(nodata.find("states_i, states_f"), std::string::npos) << nodata;
+}
+
+TEST(ImpactData, ANonFiniteStateIsRefusedWithItsRowAndColumn) {
+  pb::ImpactSet set = small_set();
+  set.post[3][4] = std::nan("");
+  const fs::path file = work_dir() / "nan.mat";
+  pb::write_impacts(file, set);
+  const std::string why = refusal(file);
+  EXPECT_NE(why.find("data.states_f"), std::string::npos) << why;
+  EXPECT_NE(why.find("row 4 column 5"), std::string::npos) << why;
+}
