@@ -66,6 +66,11 @@ LoadedData load_data(const ImpactsOptions& opt) {
   return d;
 }
 
+// the --engine spelling of a list of engine models ("none" when empty)
+std::string engine_list(const std::vector<std::string>& engines) {
+  return engines.empty() ? std::string("none") : fmt::format("{}", fmt::join(engines, ","));
+}
+
 std::vector<const ImpactModel*> pointers(const std::vector<std::unique_ptr<ImpactModel>>& models) {
   std::vector<const ImpactModel*> out;
   for (const auto& m : models) out.push_back(m.get());
@@ -249,7 +254,7 @@ int run_merge(const ImpactsOptions& opt) {
     const auto& known = impact_engine_names();
     if (std::find(known.begin(), known.end(), n) != known.end()) engines.push_back(n);
   }
-  const auto models = impact_models(fmt::format("{}", fmt::join(engines, ",")), !d.set.models.empty());
+  const auto models = impact_models(engine_list(engines), !d.set.models.empty());
   std::vector<FoldFit> fits;
   std::vector<std::string> missing;
   for (const ImpactTask& t : impact_tasks(names, o.folds)) {
@@ -293,7 +298,7 @@ int run_score(const ImpactsOptions& opt) {
     const auto& known = impact_engine_names();
     if (std::find(known.begin(), known.end(), name) != known.end()) engines.push_back(name);
   }
-  auto all = impact_models(fmt::format("{}", fmt::join(engines, ",")), !d.set.models.empty());
+  auto all = impact_models(engine_list(engines), !d.set.models.empty());
   std::vector<std::unique_ptr<ImpactModel>> models;
   std::vector<FoldFit> fits;
   for (auto& m : all) {
@@ -355,8 +360,8 @@ Action add_impacts_command(CLI::App& app, int argc, char** argv) {
       "parameters `impacts score` uses)");
   data_option(fit);
   fit->add_option("--engine", opt->engine,
-                  "reference, reference_exact, mujoco, box2d, ode, all, or a comma-separated list "
-                  "(the baselines and the file's stored predictions are always included)")
+                  "reference, reference_exact, mujoco, box2d, ode, all, none, or a comma-separated "
+                  "list (the baselines and the file's stored predictions are always included)")
       ->default_val("all");
   fit->add_option("--out", opt->out, "Fit file to write (HDF5, written atomically)");
   fit->add_option("--folds", opt->folds, "Cross-validation folds, in [2, 20]")->default_val(5);

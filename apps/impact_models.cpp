@@ -52,14 +52,14 @@ std::vector<std::unique_ptr<ImpactModel>> impact_models(const std::string& engin
   std::vector<std::string> chosen;
   if (engines == "all") {
     chosen = impact_engine_names();
-  } else {
+  } else if (engines != "none") {
     std::stringstream in(engines);
     for (std::string name; std::getline(in, name, ',');) {
       const auto& known = impact_engine_names();
       if (std::find(known.begin(), known.end(), name) == known.end()) {
         throw InputError("--engine", 0, name,
-                         fmt::format("is no engine of `impacts`: one of {}, all, or a "
-                                     "comma-separated list{}",
+                         fmt::format("is no engine of `impacts`: one of {}, all, none (the "
+                                     "baselines only), or a comma-separated list{}",
                                      fmt::join(known, ", "), did_you_mean(name, known)));
       }
       if (std::find(chosen.begin(), chosen.end(), name) == chosen.end()) chosen.push_back(name);

@@ -15,7 +15,7 @@ namespace pb::cli {
 // "reference", "reference_exact", "mujoco", "box2d", "ode"
 [[nodiscard]] const std::vector<std::string>& impact_engine_names();
 
-// NAME|all|comma-separated list of impact_engine_names() -> the engine
+// NAME|all|none|comma-separated list of impact_engine_names() -> the engine
 // models, then the baselines (rigid, naive_bounce) and, when `stored` is
 // set, the dataset's six stored predictions. InputError naming --engine.
 [[nodiscard]] std::vector<std::unique_ptr<ImpactModel>> impact_models(const std::string& engines,

@@ -5,10 +5,14 @@
 #   results/results.h5          the results file (HDF5, SPEC §5)
 #   results/sweep.h5            the work-precision sweep (HDF5, apps/cmd_sweep.cpp)
 #   results/friction_curve.h5   the friction curve (campaigns/friction_curve.toml)
+#   results/impacts_fit.h5      measured impacts: every engine fitted, cross-validated
+#                               (`planarbench impacts fit`), when the data file exists:
+#                               $PB_IMPACTS_DATA, default ../shared/data/mcube/ellipse_impacts_train.mat
 #   results/report/report.html  the report, self-contained (open it in a browser)
 #   results/report/report.md    the same in Markdown, with SVG figures
 # and prints the gate's verdict against cases/thresholds.toml.
-# Set PB_SKIP_SWEEP=1 to leave the sweep out (about 16 s on 2 cores).
+# Set PB_SKIP_SWEEP=1 to leave the sweep out (about 16 s on 2 cores), PB_SKIP_IMPACTS=1
+# to leave the measured impacts out (about 7 min on 2 cores).
 # Builds the command line only, not the tests (scripts/test.sh builds those).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,8 +33,20 @@ fi
 rm -rf results/friction_curve
 "$PB" campaign run campaigns/friction_curve.toml --out results/friction_curve --jobs "$(nproc)" --quiet
 "$PB" campaign merge results/friction_curve --out results/friction_curve.h5 --quiet
+# measured impacts (issue 23): the dataset is never committed (no licence);
+# the report reads it where the user has it
+impacts_args=()
+impacts_data="${PB_IMPACTS_DATA:-../shared/data/mcube/ellipse_impacts_train.mat}"
+if [ "${PB_SKIP_IMPACTS:-0}" != 1 ]; then
+  if [ -f "$impacts_data" ]; then
+    "$PB" impacts fit --data "$impacts_data" --engine all --jobs "$(nproc)" --out results/impacts_fit.h5
+    impacts_args=(--impacts results/impacts_fit.h5)
+  else
+    echo "report: no measured impacts ($impacts_data not found: see README.md, Measured impacts)"
+  fi
+fi
 "$PB" report results/results.h5 "${sweep_args[@]}" --campaign results/friction_curve.h5 \
-  --thresholds cases/thresholds.toml --out results/report
+  "${impacts_args[@]}" --thresholds cases/thresholds.toml --out results/report
 "$PB" check --thresholds cases/thresholds.toml results/results.h5 || rc=$((rc > 0 ? rc : $?))
 echo "report: results/report/report.html and results/report/report.md"
 exit "$rc"

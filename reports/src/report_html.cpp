@@ -256,6 +256,7 @@ std::string report_html(const Report& report, const WebAssets& assets) {
         xml_escape("planarbench report: " +
                    (!report.results_file.empty() ? report.results_file
                     : !report.campaign.file.empty() ? report.campaign.file
+                    : !report.impacts.file.empty()  ? report.impacts.file
                                                     : report.sweep_file))},
        {"UPLOT_VERSION", assets.uplot_version},
        {"UPLOT_LICENSE", script_safe(comment_safe(assets.uplot_license), "script")},

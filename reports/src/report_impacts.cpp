@@ -49,6 +49,7 @@ std::string colour_of(const std::string& model, std::size_t index) {
   if (model == "reference_exact") return "#17becf";
   if (model == "rigid") return "#000000";
   if (model == "naive_bounce") return "#7f7f7f";
+  if (model.rfind("stored_", 0) == 0) return "#bcbd22";
   return engine_colour(model, index);
 }
 
@@ -232,7 +233,7 @@ ImpactsSection impacts_section(const CampaignTable& t, const std::string& file) 
       }
       plot.lines.push_back(std::move(line));
     }
-    if (lo < hi) plot.lines.push_back({"predicted = measured", "#000000", {lo, hi}, {lo, hi}, {}, {}});
+    if (lo < hi) plot.lines.push_back({"predicted = measured", "#aaaaaa", {lo, hi}, {lo, hi}, {}, {}});
     s.figures.push_back({std::string("impacts_predicted_") + c[0], plot.title, line_plot_svg(plot)});
   }
   return s;

@@ -151,6 +151,9 @@ std::string report_markdown(const Report& report) {
   if (!report.campaign.file.empty()) {
     files += fmt::format("{}ampaign file: `{}`", files.empty() ? "C" : "; c", report.campaign.file);
   }
+  if (!report.impacts.file.empty()) {
+    files += fmt::format("{}easured impacts: `{}`", files.empty() ? "M" : "; m", report.impacts.file);
+  }
   md += files + ".\n\n";
   if (!report.check_summary.empty()) md += "**Check:** " + report.check_summary + "\n\n";
   md +=

@@ -35,7 +35,8 @@
     // the inputs on one line
     const files = el('p', {});
     for (const [label, file] of [['Results file', data.results_file], ['sweep file', data.sweep_file],
-      ['campaign file', data.campaign && data.campaign.file], ['thresholds', data.thresholds_file]]) {
+      ['campaign file', data.campaign && data.campaign.file],
+      ['measured impacts', data.impacts && data.impacts.file], ['thresholds', data.thresholds_file]]) {
       if (!file) continue;
       if (files.childNodes.length) files.appendChild(document.createTextNode('; '));
       files.appendChild(document.createTextNode(label + ': '));

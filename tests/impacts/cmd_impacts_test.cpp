@@ -166,6 +166,42 @@ TEST(CmdImpacts, BadInputIsRefusedNamingTheVariableAndLeavesNoFile) {
   EXPECT_NE(d.err.find("--folds"), std::string::npos) << d.err;
 }
 
+// A file written by scipy.io.savemat of impacts made by tests/impacts/
+// write_mat.py's own numpy implementation of the rigid law: an independent
+// writer and an independent law. The rigid baseline's fit must recover the
+// law's e and mu, and predict every impact: the two implementations agree.
+TEST(CmdImpacts, AScipyFileOfAnIndependentRigidLawIsFittedExactly) {
+  const fs::path dir = fresh_dir("scipy");
+  const fs::path file = dir / "numpy_rigid.mat";
+  const Finished w = run_shell(std::string(PB_PYTHON) + " " + PB_SOURCE_DIR + "/tests/impacts/write_mat.py " +
+                               file.string() + " 200 1 0.55 0.1 --models");
+  ASSERT_EQ(w.exit.code, 0) << w.err;
+  const Finished fit = impacts("fit --data " + file.string() + " --engine none --folds 2 --max-evaluations 100 --out " +
+                               (dir / "fit.h5").string() + " -q");
+  ASSERT_EQ(fit.exit.code, 0) << fit.err;
+  const nlohmann::json f = read_study(dir / "fit.h5");
+  const auto& conv = f.at("description").at("convention");
+  // the law conserves the momentum about the contact point exactly
+  EXPECT_NEAR(conv.at("fits").at(conv.at("chosen").get<int>()).at("correlation").get<double>(), 1.0, 1e-12);
+  bool seen = false;
+  for (const auto& m : f.at("description").at("models")) {
+    if (m.at("name") == "rigid") {
+      seen = true;
+      const auto& whole = m.at("fits").back();
+      // NLopt's xtol of 1e-4 of the unit range, and the median's flatness: 1e-3
+      EXPECT_NEAR(whole.at("parameters").at(0).get<double>(), 0.55, 1e-3);
+      EXPECT_NEAR(whole.at("parameters").at(1).get<double>(), 0.1, 1e-3);
+      // cross-validated: impacts the fit did not see, predicted to 1e-3 of their change
+      EXPECT_LT(m.at("cross_validated").at("eps_median").get<double>(), 1e-3);
+    }
+    // the file's v_models (here the measured states themselves) score 0
+    if (m.at("name") == "stored_mirtich") {
+      EXPECT_EQ(m.at("cross_validated").at("eps_median").get<double>(), 0.0);
+    }
+  }
+  EXPECT_TRUE(seen);
+}
+
 TEST(CmdImpacts, TheReportHasAMeasuredImpactsSection) {
   const fs::path dir = fresh_dir("report");
   const fs::path train = impacts_file(dir, "train.mat", 1);

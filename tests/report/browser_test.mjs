@@ -82,9 +82,20 @@ run(['run', '--case', CASES.join(','), '--engine', ENGINES.join(','), '--out', r
 const frictionCurve = path.join(path.resolve(args['web-dir']), '..', '..', 'campaigns', 'friction_curve.toml');
 run(['campaign', 'run', frictionCurve, '--out', path.join(work, 'friction_curve'), '--quiet'], [0]);
 run(['campaign', 'merge', path.join(work, 'friction_curve'), '--out', path.join(work, 'friction_curve.h5'), '--quiet'], [0]);
-run(['report', results, '--campaign', path.join(work, 'friction_curve.h5'), '--out', reportDir], [0]);
+// measured impacts (issue 23): a small file written by scipy (tests/impacts/
+// write_mat.py), fitted on Box2D (the cheapest engine), beside the results
+const impactsMat = path.join(work, 'impacts.mat');
+const writeMat = spawnSync('/usr/bin/python3', [path.join(path.resolve(args['web-dir']), '..', '..', 'tests', 'impacts', 'write_mat.py'),
+  impactsMat, '60', '4', '0.6', '0.2', '--models'], { encoding: 'utf8' });
+if (writeMat.status !== 0) fatal(`write_mat.py failed: ${writeMat.stderr}`);
+run(['impacts', 'fit', '--data', impactsMat, '--engine', 'box2d', '--folds', '2', '--max-evaluations', '3',
+  '--out', path.join(work, 'impacts_fit.h5'), '--quiet'], [0]);
+run(['report', results, '--campaign', path.join(work, 'friction_curve.h5'), '--impacts', path.join(work, 'impacts_fit.h5'),
+  '--out', reportDir], [0]);
 const reportMd = fs.readFileSync(path.join(reportDir, 'report.md'), 'utf8');
-const frictionSection = reportMd.slice(reportMd.indexOf('## Friction'));
+const frictionStart = reportMd.indexOf('## Friction');
+const frictionEnd = reportMd.indexOf('\n## ', frictionStart + 1);
+const frictionSection = reportMd.slice(frictionStart, frictionEnd < 0 ? undefined : frictionEnd);
 const frictionFigures = (frictionSection.match(/!\[[^\]]*\]\(figures\/[^)]+\.svg\)/g) || []).length;
 check(frictionFigures === 2, `report.md's friction section has 2 figures (block_hold's drift, the friction curve): ${frictionFigures}`);
 const html = path.join(reportDir, 'report.html');
@@ -235,6 +246,15 @@ try {
   check(frictionPlots === frictionFigures, `friction section draws its ${frictionFigures} figures: ${frictionPlots}`);
   const curveRows = await page.locator('#friction table tbody tr').count();
   check(curveRows === 11, `friction curve table has a row per tan(theta) / mu from 0.5 to 1.5: ${curveRows}`);
+
+  // the measured-impacts section (issue 23): its convention, models and fits
+  // tables, its four figures (the CDF of eps, predicted against measured x', y', theta')
+  const impactPlots = await page.locator('#impacts .wp-plot svg').count();
+  check(impactPlots === 4, `measured-impacts section draws its 4 figures: ${impactPlots}`);
+  const impactTables = await page.locator('#impacts table').count();
+  check(impactTables === 3, `measured-impacts section has its 3 tables: ${impactTables}`);
+  const conventionRows = await page.locator('#impacts table').first().locator('tbody tr').count();
+  check(conventionRows === 4, `the convention table has a row per sign pair: ${conventionRows}`);
 
   // tables are there
   for (const id of ['capability', 'timings', 'metrics', 'provenance']) {

@@ -9,7 +9,11 @@
 #  3. submits it again, kills shard 0 with SIGKILL once it has written its
 #     first checkpoint, checks `campaign merge` then fails naming the missing
 #     runs, resubmits shard 0 alone and checks the merge completes with no
-#     duplicate and no lost run, bit-identical to step 1.
+#     duplicate and no lost run, bit-identical to step 1;
+#  4. fits measured impacts (issue 23: a small file written by
+#     tests/impacts/write_mat.py) as 3 shards on Slurm with the merge after
+#     them (scripts/slurm/submit_impacts.sh) and checks the fit file holds the
+#     datasets of the same fit in one process, bit for bit.
 # Nothing is left running: the cluster is stopped on every exit.
 #   slurm_campaign_test.sh PLANARBENCH SOURCE_DIR WORK_DIR
 set -euo pipefail
@@ -78,4 +82,16 @@ grep -q "already in" "$work/killed/slurm-logs/resubmit-0.out" || fail "the resub
 cat "$work/killed/slurm-logs/resubmit-0.out" | head -1
 "$bin" campaign merge "$work/killed" --out "$work/killed.h5"
 $hashes same "$work/one.h5" "$work/killed.h5" || fail "the resumed campaign differs from one shard"
+
+echo "== 4. Slurm: a fit of measured impacts as 3 shards and the merge after them"
+/usr/bin/python3 "$src/tests/impacts/write_mat.py" "$work/impacts.mat" 60 4 0.6 0.2 --models
+export IMPACTS_FIT_ARGS="--engine box2d,reference_exact --folds 2 --max-evaluations 4 -q"
+# shellcheck disable=SC2086
+"$bin" impacts fit --data "$work/impacts.mat" --out "$work/impacts_one.h5" $IMPACTS_FIT_ARGS
+ids="$(bash "$slurm/submit_impacts.sh" "$work/impacts.mat" 3 "$work/impacts" "$work/impacts_three.h5")"
+echo "$ids"
+merge="$(job_of merge <<<"$ids")"
+bash "$slurm/wait_job.sh" "$merge" 300 || fail "the impacts merge job did not end in 300 s"
+[[ -f "$work/impacts_three.h5" ]] || { cat "$work/impacts/slurm-logs/"*.out; fail "no merged fit file"; }
+$hashes same "$work/impacts_one.h5" "$work/impacts_three.h5" || fail "3 impact shards on Slurm differ from one process"
 echo "PASS"
