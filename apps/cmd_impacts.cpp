@@ -109,7 +109,7 @@ nlohmann::ordered_json study_json(const ImpactsOptions& opt, const LoadedData& d
 }
 
 void print_summary(const CampaignTable& t, const char* section) {
-  std::printf("%-24s %-52s %8s %8s %8s %6s %9s\n", "model", "parameters (whole-file fit)",
+  std::printf("%-30s %-52s %8s %8s %8s %6s %9s\n", "model", "parameters (whole-file fit)",
               "median", "mean", "p90", "failed", "wall s");
   for (const auto& m : t.description.at("models")) {
     std::string params = "-";
@@ -127,18 +127,32 @@ void print_summary(const CampaignTable& t, const char* section) {
     auto num = [](const nlohmann::ordered_json& v) {
       return v.is_null() ? std::string("n/a") : fmt::format("{:.4f}", v.get<double>());
     };
-    std::printf("%-24s %-52s %8s %8s %8s %6d %9.1f\n", m.at("name").get<std::string>().c_str(),
+    std::printf("%-30s %-52s %8s %8s %8s %6d %9.1f\n", m.at("name").get<std::string>().c_str(),
                 params.empty() ? "-" : params.c_str(), num(s.at("eps_median")).c_str(),
                 num(s.at("eps_mean")).c_str(), num(s.at("eps_p90")).c_str(), s.at("failed").get<int>(),
                 m.at("wall_time_s").get<double>());
   }
 }
 
-void write_study(const ImpactsOptions& opt, CampaignTable table) {
+// prints the table's summary (unless quiet) and writes it to --out
+int write_study(const ImpactsOptions& opt, CampaignTable table, const char* section) {
+  if (!opt.quiet) print_summary(table, section);
   ResultsFile r;
   r.provenance = opt.provenance;
   r.campaign = std::move(table);
   write_results_file(opt.out, r);
+  if (!opt.quiet) std::fprintf(stderr, "wrote %s\n", opt.out.c_str());
+  return kExitOk;
+}
+
+// the engine models among a study's model names
+std::vector<std::string> engines_among(const std::vector<std::string>& names) {
+  std::vector<std::string> engines;
+  const auto& known = impact_engine_names();
+  for (const std::string& n : names) {
+    if (std::find(known.begin(), known.end(), n) != known.end()) engines.push_back(n);
+  }
+  return engines;
 }
 
 // runs `tasks`, skipping those already in `work` (when given)
@@ -229,11 +243,7 @@ int run_fit(const ImpactsOptions& opt) {
     fits.clear();
     for (const ImpactTask& t : tasks) fits.push_back(read_task(work, t));
   }
-  CampaignTable table = assemble_fit(opt, d, models, fits);
-  if (!opt.quiet) print_summary(table, "cross_validated");
-  write_study(opt, std::move(table));
-  if (!opt.quiet) std::fprintf(stderr, "wrote %s\n", opt.out.c_str());
-  return kExitOk;
+  return write_study(opt, assemble_fit(opt, d, models, fits), "cross_validated");
 }
 
 int run_merge(const ImpactsOptions& opt) {
@@ -248,13 +258,8 @@ int run_merge(const ImpactsOptions& opt) {
   ImpactsOptions o = opt;
   o.folds = study.at("folds").get<int>();
   o.seed = study.at("seed").get<std::uint64_t>();
-  std::vector<std::string> names = study.at("models").get<std::vector<std::string>>();
-  std::vector<std::string> engines;
-  for (const std::string& n : names) {
-    const auto& known = impact_engine_names();
-    if (std::find(known.begin(), known.end(), n) != known.end()) engines.push_back(n);
-  }
-  const auto models = impact_models(engine_list(engines), !d.set.models.empty());
+  const std::vector<std::string> names = study.at("models").get<std::vector<std::string>>();
+  const auto models = impact_models(engine_list(engines_among(names)), !d.set.models.empty());
   std::vector<FoldFit> fits;
   std::vector<std::string> missing;
   for (const ImpactTask& t : impact_tasks(names, o.folds)) {
@@ -270,11 +275,7 @@ int run_merge(const ImpactsOptions& opt) {
                                  "again: finished tasks are kept)",
                                  missing.size(), fmt::join(missing, ", ")));
   }
-  CampaignTable table = assemble_fit(o, d, models, fits);
-  if (!opt.quiet) print_summary(table, "cross_validated");
-  write_study(opt, std::move(table));
-  if (!opt.quiet) std::fprintf(stderr, "wrote %s\n", opt.out.c_str());
-  return kExitOk;
+  return write_study(opt, assemble_fit(o, d, models, fits), "cross_validated");
 }
 
 int run_score(const ImpactsOptions& opt) {
@@ -293,12 +294,9 @@ int run_score(const ImpactsOptions& opt) {
                  "in-sample (labelled so), not predictions\n",
                  opt.data.c_str());
   }
-  std::vector<std::string> engines;
-  for (const auto& [name, values] : frozen.models) {
-    const auto& known = impact_engine_names();
-    if (std::find(known.begin(), known.end(), name) != known.end()) engines.push_back(name);
-  }
-  auto all = impact_models(engine_list(engines), !d.set.models.empty());
+  std::vector<std::string> names;
+  for (const auto& [name, values] : frozen.models) names.push_back(name);
+  auto all = impact_models(engine_list(engines_among(names)), !d.set.models.empty());
   std::vector<std::unique_ptr<ImpactModel>> models;
   std::vector<FoldFit> fits;
   for (auto& m : all) {
@@ -327,11 +325,7 @@ int run_score(const ImpactsOptions& opt) {
   h.parameters_from = {{"path", opt.params},
                        {"data_path", frozen.data_path},
                        {"data_sha256", frozen.data_sha256}};
-  CampaignTable table = impact_study_table(h, pointers(models), d.table, fits);
-  if (!opt.quiet) print_summary(table, "scored");
-  write_study(opt, std::move(table));
-  if (!opt.quiet) std::fprintf(stderr, "wrote %s\n", opt.out.c_str());
-  return kExitOk;
+  return write_study(opt, impact_study_table(h, pointers(models), d.table, fits), "scored");
 }
 
 }  // namespace

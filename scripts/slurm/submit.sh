@@ -19,26 +19,10 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-
-if [[ $# -lt 3 ]]; then
-    sed -n '2,18p' "$0" >&2
-    exit 2
-fi
-campaign="$(realpath "$1")"
-shards="$2"
-out="$(realpath -m "$3")"
-merged="$(realpath -m "${4:-$out.h5}")"
-shift 3
-[[ $# -gt 0 && "$1" != "--" ]] && shift
-[[ $# -gt 0 && "$1" == "--" ]] && shift
-if ! [[ "$shards" =~ ^[1-9][0-9]*$ ]]; then
-    echo "submit.sh: N must be a positive integer (got '$shards')" >&2
-    exit 2
-fi
-[[ -f "$campaign" ]] || { echo "submit.sh: $campaign: no such campaign file" >&2; exit 2; }
-bin="$(realpath "${PLANARBENCH:-$root/build/release/apps/planarbench}")"
-[[ -x "$bin" ]] || { echo "submit.sh: $bin is not an executable (build first, or set PLANARBENCH)" >&2; exit 2; }
-cpus="${CPUS_PER_TASK:-2}"
+# shellcheck source=scripts/slurm/submit_common.sh
+source "$here/submit_common.sh"
+parse_submit_args "$0" "campaign file" "$@"
+campaign="$input"
 export PLANARBENCH_CASES_DIR="${PLANARBENCH_CASES_DIR:-$root/cases}"
 
 # the plan first: a campaign file with an error fails here, not in N tasks
@@ -47,11 +31,11 @@ mkdir -p "$out/slurm-logs"
 
 array=$(sbatch --parsable --array="0-$((shards - 1))" --cpus-per-task="$cpus" \
     --job-name=planarbench-shards --output="$out/slurm-logs/shard-%a.out" \
-    --export=ALL "$@" "$here/shard.sbatch" "$bin" "$campaign" "$shards" "$out")
+    --export=ALL "${extra[@]}" "$here/shard.sbatch" "$bin" "$campaign" "$shards" "$out")
 array="${array%%;*}"
 merge=$(sbatch --parsable --dependency="afterok:$array" --cpus-per-task=1 \
     --job-name=planarbench-merge --output="$out/slurm-logs/merge.out" \
-    --export=ALL "$@" "$here/merge.sbatch" "$bin" "$out" "$merged")
+    --export=ALL "${extra[@]}" "$here/merge.sbatch" "$bin" "$out" "$merged")
 merge="${merge%%;*}"
 echo "shards $array"
 echo "merge $merge"

@@ -19,36 +19,19 @@
 # --folds 5"). Prints the two job ids: "shards JOBID" and "merge JOBID".
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-root="$(cd "$here/../.." && pwd)"
-
-if [[ $# -lt 3 ]]; then
-    sed -n '2,20p' "$0" >&2
-    exit 2
-fi
-data="$(realpath "$1")"
-shards="$2"
-work="$(realpath -m "$3")"
-fit="$(realpath -m "${4:-$work.h5}")"
-shift 3
-[[ $# -gt 0 && "$1" != "--" ]] && shift
-[[ $# -gt 0 && "$1" == "--" ]] && shift
-if ! [[ "$shards" =~ ^[1-9][0-9]*$ ]]; then
-    echo "submit_impacts.sh: N must be a positive integer (got '$shards')" >&2
-    exit 2
-fi
-[[ -f "$data" ]] || { echo "submit_impacts.sh: $data: no such file of impacts" >&2; exit 2; }
-bin="$(realpath "${PLANARBENCH:-$root/build/release/apps/planarbench}")"
-[[ -x "$bin" ]] || { echo "submit_impacts.sh: $bin is not an executable (build first, or set PLANARBENCH)" >&2; exit 2; }
-cpus="${CPUS_PER_TASK:-2}"
+# shellcheck source=scripts/slurm/submit_common.sh
+source "$here/submit_common.sh"
+parse_submit_args "$0" "file of impacts" "$@"
+data="$input" work="$out" fit="$merged"
 mkdir -p "$work/slurm-logs"
 
 array=$(sbatch --parsable --array="0-$((shards - 1))" --cpus-per-task="$cpus" \
     --job-name=planarbench-impacts --output="$work/slurm-logs/shard-%a.out" \
-    --export=ALL "$@" "$here/impacts_shard.sbatch" "$bin" "$data" "$shards" "$work")
+    --export=ALL "${extra[@]}" "$here/impacts_shard.sbatch" "$bin" "$data" "$shards" "$work")
 array="${array%%;*}"
 merge=$(sbatch --parsable --dependency="afterok:$array" --cpus-per-task=1 \
     --job-name=planarbench-impacts-merge --output="$work/slurm-logs/merge.out" \
-    --export=ALL "$@" "$here/impacts_merge.sbatch" "$bin" "$work" "$data" "$fit")
+    --export=ALL "${extra[@]}" "$here/impacts_merge.sbatch" "$bin" "$work" "$data" "$fit")
 merge="${merge%%;*}"
 echo "shards $array"
 echo "merge $merge"

@@ -25,14 +25,6 @@ namespace {
 
 const pb::ImpactObject kObject;
 
-pb::ImpactState state(double angle, double vx, double vy, double w) {
-  pb::ImpactState s;
-  s.angle_rad = angle;
-  s.velocity_mps = pb::Vec2(vx, vy);
-  s.angular_velocity_radps = w;
-  return s;
-}
-
 // velocity of the lowest point (the contact point) of the ellipse at s
 double kinetic(const pb::ImpactState& s) {
   return 0.5 * kObject.mass_kg * s.velocity_mps.squaredNorm() +
@@ -100,8 +92,8 @@ TEST(ImpactError, FailuresRankAboveEveryNumber) {
 }
 
 TEST(RigidImpact, NewtonRestitutionAtTheContactPointAndTheMomentumAboutIt) {
-  for (const auto& pre : {state(0.4, 0.5, -2.5, 5.0), state(-1.2, 0.9, -2.3, -10.0),
-                          state(2.9, 0.2, -2.8, 20.0)}) {
+  for (const auto& pre : {pb::test::impact_state(0.4, 0.5, -2.5, 5.0), pb::test::impact_state(-1.2, 0.9, -2.3, -10.0),
+                          pb::test::impact_state(2.9, 0.2, -2.8, 20.0)}) {
     const pb::Vec2 r = pb::lowest_point_offset(kObject, pre.angle_rad);
     for (double e : {0.0, 0.6, 1.0}) {
       for (double mu : {0.0, 0.19, 5.0}) {
@@ -139,7 +131,7 @@ TEST(RigidImpact, NewtonRestitutionAtTheContactPointAndTheMomentumAboutIt) {
 }
 
 TEST(RigidImpact, NaiveBounceReversesOnlyTheVerticalSpeed) {
-  const pb::ImpactState post = pb::naive_bounce(state(0.4, 0.5, -2.5, 5.0), 0.53);
+  const pb::ImpactState post = pb::naive_bounce(pb::test::impact_state(0.4, 0.5, -2.5, 5.0), 0.53);
   EXPECT_EQ(post.velocity_mps.x(), 0.5);
   EXPECT_DOUBLE_EQ(post.velocity_mps.y(), 0.53 * 2.5);
   EXPECT_EQ(post.angular_velocity_radps, 5.0);

@@ -20,14 +20,6 @@ namespace {
 
 const pb::ImpactObject kObject;
 
-pb::ImpactState state(double angle, double vx, double vy, double w) {
-  pb::ImpactState s;
-  s.angle_rad = angle;
-  s.velocity_mps = pb::Vec2(vx, vy);
-  s.angular_velocity_radps = w;
-  return s;
-}
-
 // The truth of a vertical drop of a disk (mass m) on the clamped Kelvin-Voigt
 // law with gravity: the impulse of the contact per unit mass (= the
 // post-impact speed carried back to the touch, minus the pre-impact one) and
@@ -66,7 +58,7 @@ DropTruth drop_truth(double m, double k, double c, double v_in) {
 }  // namespace
 
 TEST(ImpactCase, TheArcReachesTheMeasuredStateAtTheTouch) {
-  const pb::ImpactState at_touch = state(0.8, 0.6, -2.4, 12.0);
+  const pb::ImpactState at_touch = pb::test::impact_state(0.8, 0.6, -2.4, 12.0);
   const pb::Case c = pb::impact_case(kObject, at_touch, pb::ImpactLaw{}, 180);
   ASSERT_EQ(c.bodies.size(), 2u);
   const pb::Body& e = c.bodies[1];
@@ -86,7 +78,7 @@ TEST(ImpactCase, TheArcReachesTheMeasuredStateAtTheTouch) {
 
 TEST(ImpactCase, AnArcThatTouchesEarlierIsRefused) {
   // rising lowest point: the spin lifts it faster than the centre falls
-  const pb::ImpactState s = state(0.6, 0.0, -0.01, -40.0);
+  const pb::ImpactState s = pb::test::impact_state(0.6, 0.0, -0.01, -40.0);
   EXPECT_THROW((void)pb::impact_case(kObject, s, pb::ImpactLaw{}, 180), pb::InputError);
 }
 
@@ -109,7 +101,7 @@ TEST(ImpactSimulation, ADiskDropMatchesTheClampedLawWithGravity) {
   const double e = truth.delta_v_mps / v_in - 1.0;
   const double omega_h = M_PI / truth.contact_s * 1e-4;
   const double euler = (omega_h * omega_h + law.damping_ratio * omega_h + 9.81e-4 / v_in) * e / (1 + e);
-  const pb::ImpactState at_touch = state(0.0, 0.0, -v_in, 0.0);
+  const pb::ImpactState at_touch = pb::test::impact_state(0.0, 0.0, -v_in, 0.0);
   struct Expect {
     const char* engine;
     std::vector<std::pair<std::string, std::string>> settings;
@@ -148,7 +140,7 @@ TEST(ImpactSimulation, ADiskDropMatchesTheClampedLawWithGravity) {
 }
 
 TEST(ImpactSimulation, EveryEnginePredictsAnObliqueImpactTheSameBitsTwice) {
-  const pb::ImpactState at_touch = state(0.9, 0.7, -2.5, 8.0);
+  const pb::ImpactState at_touch = pb::test::impact_state(0.9, 0.7, -2.5, 8.0);
   const pb::ImpactLaw law{5e4, 0.17, 0.18};
   for (const char* name : {"reference", "mujoco", "ode", "box2d"}) {
     auto engine = pb::make_engine(name);

@@ -13,6 +13,15 @@
 
 namespace pb::test {
 
+// a state at the touch: angle (rad, counter-clockwise), x', y' (m/s), theta' (rad/s)
+inline ImpactState impact_state(double angle, double vx, double vy, double w) {
+  ImpactState s;
+  s.angle_rad = angle;
+  s.velocity_mps = Vec2(vx, vy);
+  s.angular_velocity_radps = w;
+  return s;
+}
+
 // n impacts; `law` maps a pre-impact state (the project's convention) to
 // the post-impact one. Stored with AngleConvention{-1, -1} (the MCube file's).
 inline ImpactSet synthetic_impacts(std::size_t n, unsigned seed,

@@ -55,15 +55,26 @@ FoldFit score_model(const ImpactModel& model, const ImpactTable& table,
   return f;
 }
 
-nlohmann::ordered_json fold_fit_json(const FoldFit& f) {
+namespace {
+
+// the fit of a fold without its predictions: what a table's description keeps
+nlohmann::ordered_json fit_json(const FoldFit& f) {
   nlohmann::ordered_json j;
-  j["model"] = f.model;
   j["fold"] = f.fold;
   j["parameters"] = f.fit.parameters;
   j["objective"] = std::isfinite(f.fit.objective) ? nlohmann::ordered_json(f.fit.objective) : nullptr;
   j["evaluations"] = f.fit.evaluations;
   j["stop"] = f.fit.stop;
   j["wall_time_s"] = f.wall_time_s;
+  return j;
+}
+
+}  // namespace
+
+nlohmann::ordered_json fold_fit_json(const FoldFit& f) {
+  nlohmann::ordered_json j;
+  j["model"] = f.model;
+  j.update(fit_json(f));
   j["predicted"] = f.predicted;
   nlohmann::ordered_json outcomes = nlohmann::ordered_json::array();
   for (const ImpactOutcome& o : f.outcomes) {
@@ -212,13 +223,6 @@ CampaignTable impact_study_table(const ImpactStudyHeader& header,
     for (const FoldFit& f : fits) {
       if (f.model != m->name()) continue;
       wall += f.wall_time_s;
-      nlohmann::ordered_json fj;
-      fj["fold"] = f.fold;
-      fj["parameters"] = f.fit.parameters;
-      fj["objective"] = std::isfinite(f.fit.objective) ? nlohmann::ordered_json(f.fit.objective) : nullptr;
-      fj["evaluations"] = f.fit.evaluations;
-      fj["stop"] = f.fit.stop;
-      fj["wall_time_s"] = f.wall_time_s;
       const std::vector<double> eps = impact_errors(table, f.predicted, f.outcomes);
       Judged& into = f.fold == kWholeFile ? in_sample : judged;
       for (std::size_t k = 0; k < f.predicted.size(); ++k) {
@@ -253,7 +257,7 @@ CampaignTable impact_study_table(const ImpactStudyHeader& header,
                        o.ok() && m->kind() == "engine" ? static_cast<double>(o.episodes) : nan};
         t.runs.push_back(std::move(row));
       }
-      fold_list.push_back(fj);
+      fold_list.push_back(fit_json(f));
     }
     mj["fits"] = fold_list;
     if (!judged.eps.empty()) {
