@@ -161,6 +161,19 @@ TEST(CmdImpacts, BadInputIsRefusedNamingTheVariableAndLeavesNoFile) {
   EXPECT_NE(c.err.find("impacts_fit"), std::string::npos) << c.err;
   EXPECT_FALSE(fs::exists(dir / "c.h5"));
 
+  // an impact whose lowest point moves away from the ground is no impact
+  {
+    pb::ImpactSet set = pb::read_impacts(train);
+    set.pre[2][4] = 0.5;  // y' > 0: rising
+    pb::write_impacts(dir / "rising.mat", set);
+  }
+  const Finished e = impacts("fit --data " + (dir / "rising.mat").string() + " --out " + (dir / "e.h5").string());
+  EXPECT_EQ(e.exit.code, 2);
+  EXPECT_NE(e.err.find("data.states_i"), std::string::npos) << e.err;
+  EXPECT_NE(e.err.find("row 3"), std::string::npos) << e.err;
+  EXPECT_NE(e.err.find("does not approach the ground"), std::string::npos) << e.err;
+  EXPECT_FALSE(fs::exists(dir / "e.h5"));
+
   const Finished d = impacts("fit --data " + train.string() + " --folds 1 --out " + (dir / "d.h5").string());
   EXPECT_EQ(d.exit.code, 2);
   EXPECT_NE(d.err.find("--folds"), std::string::npos) << d.err;

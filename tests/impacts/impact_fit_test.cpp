@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <set>
+#include <stdexcept>
 
 #include "planarbench/impacts/impact_fit.hpp"
 #include "planarbench/impacts/impact_study.hpp"
@@ -27,6 +28,41 @@ pb::ImpactTable rigid_table(std::size_t n) {
 }
 
 }  // namespace
+
+// a model whose predictor fails on impact 5, as a broken engine build would
+class FailingModel final : public pb::ImpactModel {
+ public:
+  std::string name() const override { return "failing"; }
+  std::string kind() const override { return "engine"; }
+  std::string description() const override { return "throws on impact 5"; }
+  std::vector<pb::ImpactParameter> parameters() const override {
+    return {{"x", "-", 0.0, 1.0, 0.5, false, "nothing"}};
+  }
+  std::unique_ptr<pb::ImpactPredictor> predictor() const override {
+    struct P final : pb::ImpactPredictor {
+      pb::ImpactOutcome predict(const pb::ImpactTable&, std::size_t i, const std::vector<double>&) override {
+        if (i == 5) throw std::length_error("impact 5 cannot be built");
+        return {};
+      }
+    };
+    return std::make_unique<P>();
+  }
+};
+
+TEST(ImpactFit, AFailureInAWorkerReachesTheCallerAsItself) {
+  // the exception of a worker thread, and of NLopt's objective, arrives as
+  // thrown (not std::terminate, not NLopt's bare "nlopt failure")
+  const pb::ImpactTable t = rigid_table(12);
+  std::vector<std::size_t> all(t.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+  const FailingModel m;
+  for (int jobs : {1, 2}) {
+    EXPECT_THROW((void)pb::predict_impacts(m, t, all, {0.5}, jobs), std::length_error) << jobs;
+    pb::FitOptions o;
+    o.jobs = jobs;
+    EXPECT_THROW((void)pb::fit_impacts(m, t, all, o), std::length_error) << jobs;
+  }
+}
 
 TEST(ImpactFolds, APartitionOfBalancedSizesFixedByTheSeed) {
   const auto folds = pb::impact_folds(103, 5, 23);

@@ -37,19 +37,25 @@ double ballistic_gap(const ImpactObject& o, const ImpactState& at_touch, double 
   return p.position_m.y() - touching_height(o, p.angle_rad);
 }
 
-Case impact_case(const ImpactObject& o, const ImpactState& at_touch, const ImpactLaw& law,
-                 int outline_points) {
-  // the arc must not reach the ground before the touch: sampled at 1/20 of the lead
+std::string impact_arc_problem(const ImpactObject& o, const ImpactState& at_touch) {
   for (int k = 0; k < 20; ++k) {
     const double t = kLeadTime_s * k / 20.0;
     if (ballistic_gap(o, at_touch, t) <= 0.0) {
-      throw InputError(fmt::format(
-          "impact at angle {:.4f} rad, velocity ({:.3f}, {:.3f}) m/s, {:.3f} rad/s: its ballistic "
-          "arc touches the ground {:.2g} s before the measured impact (the lowest point does not "
-          "approach the ground there)",
+      return fmt::format(
+          "the impact at angle {:.4f} rad, velocity ({:.3f}, {:.3f}) m/s, {:.3f} rad/s: its "
+          "ballistic arc touches the ground {:.2g} s before the impact (its lowest point does not "
+          "approach the ground)",
           at_touch.angle_rad, at_touch.velocity_mps.x(), at_touch.velocity_mps.y(),
-          at_touch.angular_velocity_radps, kLeadTime_s - t));
+          at_touch.angular_velocity_radps, kLeadTime_s - t);
     }
+  }
+  return "";
+}
+
+Case impact_case(const ImpactObject& o, const ImpactState& at_touch, const ImpactLaw& law,
+                 int outline_points) {
+  if (const std::string problem = impact_arc_problem(o, at_touch); !problem.empty()) {
+    throw InputError(problem);
   }
   Case c;
   c.name = "impact";

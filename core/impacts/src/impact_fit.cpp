@@ -4,7 +4,9 @@
 #include <atomic>
 #include <cmath>
 #include <functional>
+#include <exception>
 #include <limits>
+#include <mutex>
 #include <nlopt.hpp>
 #include <thread>
 
@@ -15,10 +17,20 @@ std::vector<ImpactOutcome> predict_impacts(const ImpactModel& model, const Impac
                                            const std::vector<double>& parameters, int jobs) {
   std::vector<ImpactOutcome> out(indices.size());
   std::atomic<std::size_t> next{0};
+  // an exception in a worker (a bad build, memory) is rethrown here, the
+  // first one, once every worker has stopped
+  std::mutex failed_mutex;
+  std::exception_ptr failed;
   auto work = [&] {
-    auto predictor = model.predictor();
-    for (std::size_t k = next++; k < indices.size(); k = next++) {
-      out[k] = predictor->predict(table, indices[k], parameters);
+    try {
+      auto predictor = model.predictor();
+      for (std::size_t k = next++; k < indices.size(); k = next++) {
+        out[k] = predictor->predict(table, indices[k], parameters);
+      }
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(failed_mutex);
+      if (!failed) failed = std::current_exception();
+      next = indices.size();  // the others stop at their next impact
     }
   };
   const int threads = std::max(1, std::min<int>(jobs, static_cast<int>(indices.size())));
@@ -26,6 +38,7 @@ std::vector<ImpactOutcome> predict_impacts(const ImpactModel& model, const Impac
   for (int t = 1; t < threads; ++t) pool.emplace_back(work);
   work();
   for (std::thread& t : pool) t.join();
+  if (failed) std::rethrow_exception(failed);
   return out;
 }
 
@@ -103,12 +116,20 @@ FitResult fit_impacts(const ImpactModel& model, const ImpactTable& table,
   opt.set_maxeval(options.max_evaluations);
   opt.set_xtol_abs(1e-4);  // 1e-4 of a parameter's range: far below what the median resolves
   // the objective on the unit cube of the free parameters
+  // (an exception inside it is kept and rethrown after NLopt has stopped:
+  // NLopt's wrapper would turn it into a bare "nlopt failure")
+  std::exception_ptr failed;
   std::function<double(const std::vector<double>&)> objective = [&](const std::vector<double>& u) {
-    std::vector<double> v = values;
-    for (std::size_t f = 0; f < free.size(); ++f) v[free[f]] = from_unit(specs[free[f]], u[f]);
-    const double median = evaluate(v);
-    // a median of failures is +inf: NLopt needs a finite number
-    return std::isfinite(median) ? median : 1e6;
+    try {
+      std::vector<double> v = values;
+      for (std::size_t f = 0; f < free.size(); ++f) v[free[f]] = from_unit(specs[free[f]], u[f]);
+      const double median = evaluate(v);
+      // a median of failures is +inf: NLopt needs a finite number
+      return std::isfinite(median) ? median : 1e6;
+    } catch (...) {
+      failed = std::current_exception();
+      throw nlopt::forced_stop();
+    }
   };
   opt.set_min_objective(
       [](const std::vector<double>& u, std::vector<double>& /*grad*/, void* data) {
@@ -123,6 +144,9 @@ FitResult fit_impacts(const ImpactModel& model, const ImpactTable& table,
     r = opt.optimize(u, best);
   } catch (const nlopt::roundoff_limited&) {
     r = nlopt::SUCCESS;  // the best point so far is in u
+  } catch (...) {
+    if (failed) std::rethrow_exception(failed);
+    throw;
   }
   for (std::size_t f = 0; f < free.size(); ++f) values[free[f]] = from_unit(specs[free[f]], u[f]);
   result.parameters = values;

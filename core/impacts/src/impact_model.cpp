@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "planarbench/errors.hpp"
 #include "planarbench/impacts/impact_case.hpp"
 #include "planarbench/impacts/rigid_impact.hpp"
 
@@ -17,6 +18,9 @@ ImpactTable make_impact_table(const ImpactSet& set, const ImpactObject& o, Angle
   t.after.reserve(set.size());
   for (std::size_t i = 0; i < set.size(); ++i) {
     t.before.push_back(to_model(set.pre[i], c));
+    if (const std::string problem = impact_arc_problem(o, t.before.back()); !problem.empty()) {
+      throw InputError(set.path, 0, "data.states_i", fmt::format("row {}: {}", i + 1, problem));
+    }
     ImpactState after = to_model(set.post[i], c);
     after.angle_rad = t.before.back().angle_rad;  // the impact's configuration
     t.after.push_back(after);

@@ -4,6 +4,8 @@
 // the contact law whose parameters are being fitted.
 #pragma once
 
+#include <string>
+
 #include "planarbench/case.hpp"
 #include "planarbench/impacts/impact_object.hpp"
 
@@ -35,5 +37,10 @@ struct ImpactLaw {
 // ballistic arc (positive: apart); impact_case refuses a state whose arc
 // touches before kLeadTime_s.
 [[nodiscard]] double ballistic_gap(const ImpactObject& o, const ImpactState& at_touch, double t_s);
+
+// Why `at_touch` cannot be run as an impact ("" when it can): its arc
+// touches the ground before the measured touch (the lowest point does not
+// approach the ground), sampled at 1/20 of the lead time.
+[[nodiscard]] std::string impact_arc_problem(const ImpactObject& o, const ImpactState& at_touch);
 
 }  // namespace pb

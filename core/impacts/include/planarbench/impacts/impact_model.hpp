@@ -27,6 +27,8 @@ struct ImpactTable {
   std::vector<double> drop;             // the impact's row in the original file
   [[nodiscard]] std::size_t size() const { return before.size(); }
 };
+// InputError naming the file and the row of an impact whose lowest point does
+// not approach the ground (impact_case.hpp: no arc leads to it).
 [[nodiscard]] ImpactTable make_impact_table(const ImpactSet& set, const ImpactObject& o,
                                             AngleConvention c);
 
