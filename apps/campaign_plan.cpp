@@ -8,10 +8,10 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
-#include <queue>
 #include <set>
 #include <toml++/toml.h>
 
+#include "campaign_size.hpp"
 #include "cli_common.hpp"
 #include "planarbench/case_loader.hpp"
 #include "planarbench/did_you_mean.hpp"
@@ -26,8 +26,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// the largest campaign: 10^8 runs (a plan's arithmetic stays exact far beyond)
-constexpr double kMaxRuns = 1e8;
+// the largest campaign is kMaxPlannedRuns (campaign_size.hpp): what its plan
+// takes in memory, not its arithmetic, which stays exact far beyond
 constexpr std::int64_t kMaxAxisPoints = 1000000;
 
 // a number as settings text: the shortest decimal that reads back to the same double
@@ -324,51 +324,6 @@ std::string CampaignPlan::describe(std::int64_t id) const {
   return run_text(id, cases[r.case_index].c.name, engines[r.engine_index], a, r.point);
 }
 
-std::pair<int, int> parse_shard(const std::string& text, const std::string& option) {
-  const auto slash = text.find('/');
-  int k = -1;
-  int n = 0;
-  try {
-    std::size_t used_k = 0;
-    std::size_t used_n = 0;
-    if (slash != std::string::npos) {
-      k = std::stoi(text.substr(0, slash), &used_k);
-      n = std::stoi(text.substr(slash + 1), &used_n);
-    }
-    if (slash == std::string::npos || used_k != slash || used_n != text.size() - slash - 1) n = 0;
-  } catch (const std::exception&) {
-    n = 0;
-  }
-  if (n < 1 || n > 100000 || k < 0 || k >= n) {
-    throw InputError(option, 0, text,
-                     "expected K/N with 0 <= K < N <= 100000, e.g. 0/4 (Slurm: "
-                     "$SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT)");
-  }
-  return {k, n};
-}
-
-std::vector<std::vector<std::int64_t>> partition(const CampaignPlan& plan, int n) {
-  const std::int64_t total = plan.size();
-  std::vector<std::pair<double, std::int64_t>> runs;
-  runs.reserve(static_cast<std::size_t>(total));
-  for (std::int64_t id = 0; id < total; ++id) runs.emplace_back(plan.cost(id), id);
-  std::sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) {
-    return a.first != b.first ? a.first > b.first : a.second < b.second;
-  });
-  using Load = std::pair<double, int>;  // (estimated cost so far, shard)
-  std::priority_queue<Load, std::vector<Load>, std::greater<>> least;
-  for (int k = 0; k < n; ++k) least.emplace(0.0, k);
-  std::vector<std::vector<std::int64_t>> shards(static_cast<std::size_t>(n));
-  for (const auto& [c, id] : runs) {
-    auto [load, k] = least.top();
-    least.pop();
-    shards[static_cast<std::size_t>(k)].push_back(id);
-    least.emplace(load + c, k);
-  }
-  for (auto& s : shards) std::sort(s.begin(), s.end());
-  return shards;
-}
-
 CampaignTable campaign_header(const CampaignPlan& plan) {
   CampaignTable t;
   t.kind = "campaign";
@@ -397,7 +352,7 @@ CampaignTable campaign_header(const CampaignPlan& plan) {
   return t;
 }
 
-CampaignPlan load_campaign(const fs::path& file, const std::string& cases_dir_option) {
+CampaignPlan load_campaign(const fs::path& file, const std::string& cases_dir_option, bool quiet) {
   CampaignPlan plan;
   plan.file = file.string();
   const Reader in(plan.file);
@@ -671,13 +626,20 @@ CampaignPlan load_campaign(const fs::path& file, const std::string& cases_dir_op
       }
       a.case_key = a.axis.kind == "perturb" || is_case_key(a.axis.key);
       plan.axes.push_back(std::move(a));
-      if (static_cast<double>(plan.size()) > kMaxRuns) {
-        in.fail(&t, where, fmt::format("the campaign would have more than {:g} runs", kMaxRuns));
+      if (const std::string problem = plan_size_problem(plan.size()); !problem.empty()) {
+        in.fail(&t, where, problem);
       }
     }
   }
 
   // ---- every axis point against every case and engine, before anything runs ----
+  std::int64_t to_check = 0;
+  for (const auto& a : plan.axes) {
+    to_check += static_cast<std::int64_t>(plan.cases.size()) *
+                (a.axis.kind == "perturb" ? 1 : static_cast<std::int64_t>(a.axis.values.size()));
+  }
+  PlanProgress checking("checking every axis point against every case and engine", to_check, quiet);
+  std::int64_t checked = 0;
   for (std::size_t k = 0; k < plan.axes.size(); ++k) {
     const CampaignAxisPlan& a = plan.axes[k];
     const std::string where = fmt::format("axis[{}]", k);
@@ -699,6 +661,7 @@ CampaignPlan load_campaign(const fs::path& file, const std::string& cases_dir_op
       // a random axis: its first sample stands for the rest (same keys and types)
       const std::size_t points = a.axis.kind == "perturb" ? 1 : a.axis.values.size();
       for (std::size_t p = 0; p < points; ++p) {
+        checking.tick(++checked);
         CampaignPlan::RunRef r;
         r.point = {p};
         std::vector<std::string> assignments = set_assignments;

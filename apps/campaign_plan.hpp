@@ -21,6 +21,13 @@
 // The runs are every case x engine x axis point, numbered in that order (the
 // case outermost, the last axis innermost): a run's id, and so its settings,
 // do not depend on the shards.
+//
+// Size: an axis has at most 1,000,000 points, and a campaign at most
+// 33,554,432 runs: planning it takes 32 bytes per run (a run's estimated cost
+// and id while the runs are dealt to shards, 16 bytes, and its id in its
+// shard's list, 8 bytes that a growing list may double), and the plan is
+// held to 1 GiB (campaign_size.hpp). A larger campaign is refused when it is
+// read, with that formula and the limit in the message; split it.
 #pragma once
 
 #include <cstdint>
@@ -99,19 +106,14 @@ struct CampaignPlan {
 // Reads and validates the campaign file: every error is an InputError naming
 // the file, the line, the field and what is allowed; every case is loaded and
 // every axis point checked against every case and engine before anything runs.
+// A campaign whose plan would not fit its memory limit is refused
+// (campaign_size.hpp: 32 bytes per run, 1 GiB, at most 33,554,432 runs).
+// With `quiet` false, a long check says how far it is on stderr.
 [[nodiscard]] CampaignPlan load_campaign(const std::filesystem::path& file,
-                                         const std::string& cases_dir_option);
+                                         const std::string& cases_dir_option, bool quiet = true);
 
 // The metrics a campaign may record (name, unit, what), "trace" included.
 [[nodiscard]] const std::vector<CampaignMetric>& campaign_metrics();
-
-// "K/N" (0 <= K < N <= 100000) as {K, N}; InputError naming `option` otherwise.
-[[nodiscard]] std::pair<int, int> parse_shard(const std::string& text, const std::string& option);
-
-// The ids of shard k of n, ascending: the runs dealt longest first to the
-// shard with the least estimated cost so far (ties to the lowest shard, runs
-// of equal cost by id): deterministic, and balanced by estimated cost.
-[[nodiscard]] std::vector<std::vector<std::int64_t>> partition(const CampaignPlan& plan, int n);
 
 // The table's header for this plan: cases, axes, metrics, engines (no runs).
 [[nodiscard]] CampaignTable campaign_header(const CampaignPlan& plan);

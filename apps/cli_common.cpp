@@ -126,7 +126,7 @@ std::string parse_error_text(const CLI::App* app, const CLI::Error& e) {
       const std::string value = what.substr(eq + 3);
       const CLI::Option* o = cmd->get_option_no_throw(name);
       const std::string type = o != nullptr ? o->get_type_name() : std::string("INT");
-      return fmt::format("{}: must be {} (got '{}')", name, allowed_for(name, type), value);
+      return fmt::format("{}: must be {} (got {})", name, allowed_for(name, type), echo_value(value));
     }
   }
   // an unknown option is the cause even when CLI11 first finds a required
@@ -135,7 +135,7 @@ std::string parse_error_text(const CLI::App* app, const CLI::Error& e) {
     for (const auto& arg : cmd->remaining()) {
       if (arg.rfind("--", 0) != 0) continue;
       const auto names = option_names(cmd);
-      return fmt::format("unknown option '{}'{}; options: {} (see `{}`)", arg,
+      return fmt::format("unknown option {}{}; options: {} (see `{}`)", echo_value(arg),
                          did_you_mean(arg, names), join_words(names), usage);
     }
   }
@@ -145,7 +145,8 @@ std::string parse_error_text(const CLI::App* app, const CLI::Error& e) {
     const std::string arg = what.substr(at + extra.size());
     const bool is_option = arg.rfind('-', 0) == 0;
     const auto names = is_option || cmd != app ? option_names(cmd) : subcommand_names(app);
-    return fmt::format("{}{}; {}: {} (see `{}`)", what, did_you_mean(arg, names),
+    return fmt::format("{}{}{}; {}: {} (see `{}`)", what.substr(0, at + extra.size()),
+                       echo_value(arg, '\0', 200), did_you_mean(arg, names),
                        is_option || cmd != app ? "options" : "commands", join_words(names), usage);
   }
   // "A subcommand is required", also when the word given is not a command
@@ -153,7 +154,7 @@ std::string parse_error_text(const CLI::App* app, const CLI::Error& e) {
     const auto names = subcommand_names(app);
     const auto rest = app->remaining();
     if (!rest.empty() && rest.front().rfind('-', 0) != 0) {
-      return fmt::format("unknown command '{}'{}; commands: {} (see `{}`)", rest.front(),
+      return fmt::format("unknown command {}{}; commands: {} (see `{}`)", echo_value(rest.front()),
                          did_you_mean(rest.front(), names), join_words(names), usage);
     }
     return fmt::format("{}: one of {} (see `{}`)", what, join_words(names), usage);
@@ -161,11 +162,12 @@ std::string parse_error_text(const CLI::App* app, const CLI::Error& e) {
   return fmt::format("{} (see `{}`)", what, usage);
 }
 
-// one line: newlines of a message would break the "one line" rule
+// one line: newlines of a message would break the "one line" rule, other
+// control characters (a NUL ends the printed line) are escaped
 std::string one_line(std::string s) {
   std::replace(s.begin(), s.end(), '\n', ' ');
   while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s;
+  return printable(s);
 }
 
 // ---- [settings] lines of a case file -----------------------------------------
@@ -211,7 +213,7 @@ Overrides parse_overrides(const std::vector<std::string>& assignments) {
   for (const auto& a : assignments) {
     const auto eq = a.find('=');
     if (eq == std::string::npos || eq == 0) {
-      throw InputError("--set", 0, a, "expected KEY=VALUE, e.g. duration=2 or dt=1e-4");
+      throw InputError("--set", 0, echo_value(a, '\0', 200), "expected KEY=VALUE, e.g. duration=2 or dt=1e-4");
     }
     const std::string key = a.substr(0, eq);
     const std::string value = a.substr(eq + 1);
@@ -226,7 +228,7 @@ Overrides parse_overrides(const std::vector<std::string>& assignments) {
         all.emplace_back(k);
       }
       throw InputError(
-          "--set", 0, key,
+          "--set", 0, echo_value(key, '\0', 200),
           fmt::format("unknown key{}; case keys: duration, output_interval, gravity, "
                       "outline_points, truth, contact.<field>, contacts.<name>.<field>, "
                       "bodies.<name>.<field>; engine keys: `planarbench list --settings`",
@@ -254,15 +256,27 @@ void check_output_file(const std::string& option, const fs::path& path) {
   (void)output_target(option, path);
 }
 
+bool same_file(const fs::path& a, const fs::path& b) {
+  // the same file (also through links), or the same name when neither exists yet
+  std::error_code ec, ec2;
+  if (fs::equivalent(a, b, ec) && !ec) return true;
+  return fs::weakly_canonical(a, ec) == fs::weakly_canonical(b, ec2) && !ec && !ec2;
+}
+
+void check_spares_inputs(const std::string& option, const fs::path& output,
+                         const std::vector<NamedInput>& inputs, const std::string& allowed) {
+  for (const auto& in : inputs) {
+    if (in.path.empty() || !same_file(output, in.path)) continue;
+    throw InputError(option, 0, output.string(),
+                     fmt::format("names a file this command also reads or writes ({} '{}'); {}",
+                                 in.what, in.path.string(), allowed));
+  }
+}
+
 void check_not_an_input(const std::string& option, const fs::path& output,
                         const std::vector<fs::path>& inputs) {
   for (const auto& in : inputs) {
-    // the same file (also through links), or the same name when neither exists yet
-    std::error_code ec, ec2;
-    const bool same_file = fs::equivalent(output, in, ec) && !ec;
-    const bool same_name = fs::weakly_canonical(output, ec) == fs::weakly_canonical(in, ec2) &&
-                           !ec && !ec2;
-    if (same_file || same_name) {
+    if (same_file(output, in)) {
       throw InputError(option, 0, output.string(),
                        fmt::format("names a file this command also reads or writes ('{}'); "
                                    "give another file",
@@ -280,9 +294,9 @@ void check_engine_spec(const std::string& spec) {
         spec.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     if (std::find(names.begin(), names.end(), item) == names.end()) {
       throw InputError("--engine", 0, "",
-                       fmt::format("unknown engine '{}'{}; allowed: {}, all, or a comma-separated "
+                       fmt::format("unknown engine {}{}; allowed: {}, all, or a comma-separated "
                                    "list of engines",
-                                   item, did_you_mean(item, names), join_words(names)));
+                                   echo_value(item), did_you_mean(item, names), join_words(names)));
     }
     if (comma == std::string::npos) break;
     start = comma + 1;

@@ -55,6 +55,26 @@ void check_output_file(const std::string& option, const std::filesystem::path& p
 void check_not_an_input(const std::string& option, const std::filesystem::path& output,
                         const std::vector<std::filesystem::path>& inputs);
 
+// An input of a command, as messages name it: `what` ("the results file",
+// "--thresholds") and its path.
+struct NamedInput {
+  std::string what;
+  std::filesystem::path path;
+};
+
+// `a` and `b` are one file: the same file (also through links: writing one
+// through a link replaces the file it names) or the same name once resolved
+[[nodiscard]] bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// Writing `output` (for `option`) replaces none of `inputs`; else an
+// InputError "OPTION: OUTPUT: names a file this command also reads or writes
+// (WHAT 'PATH'); ALLOWED". Every command checks each output it writes, the
+// files inside an --out folder included, against each of its inputs before
+// any work (issue 24).
+void check_spares_inputs(const std::string& option, const std::filesystem::path& output,
+                         const std::vector<NamedInput>& inputs,
+                         const std::string& allowed = "give another file");
+
 // NAME, all or a comma-separated list of engine names, with a "did you mean"
 void check_engine_spec(const std::string& spec);
 

@@ -15,6 +15,8 @@
 #include <set>
 
 #include "campaign_plan.hpp"
+#include "campaign_shards.hpp"
+#include "campaign_size.hpp"
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "planarbench/case_loader.hpp"
@@ -59,7 +61,9 @@ int plan_campaign(const CampaignOptionsCli& opt) {
     throw InputError("--shards", 0, std::to_string(opt.shards), "must be in [1, 100000]");
   }
   const auto t0 = Clock::now();
-  const CampaignPlan plan = load_campaign(opt.file, opt.cases_dir);
+  // a plan of millions of runs takes seconds: past the first, progress on
+  // stderr (issue 24); its size is held to campaign_size.hpp's limit
+  const CampaignPlan plan = load_campaign(opt.file, opt.cases_dir, opt.quiet);
   const std::int64_t n = plan.size();
   std::string shape = fmt::format("{} case(s) x {} engine(s)", plan.cases.size(), plan.engines.size());
   for (const auto& a : plan.axes) shape += fmt::format(" x {} ({})", a.axis.values.size(), a.axis.name);
@@ -78,7 +82,9 @@ int plan_campaign(const CampaignOptionsCli& opt) {
   // the estimate, by engine
   std::map<std::string, double> by_engine;
   double total = 0.0;
+  PlanProgress costing("estimating the cost of the runs", n, opt.quiet);
   for (std::int64_t id = 0; id < n; ++id) {
+    costing.tick(id + 1);
     const double c = plan.cost(id);
     by_engine[plan.engines[plan.decode(id).engine_index]] += c;
     total += c;
@@ -88,7 +94,7 @@ int plan_campaign(const CampaignOptionsCli& opt) {
               total);
   for (const auto& e : plan.engines) std::printf("  %-10s %.4g CPU-s\n", e.c_str(), by_engine[e]);
   if (opt.shards > 1) {
-    const auto shards = partition(plan, opt.shards);
+    const auto shards = partition(plan, opt.shards, opt.quiet);
     double most = 0.0;
     std::size_t fewest = shards.front().size();
     std::size_t largest = 0;
@@ -435,6 +441,8 @@ int merge_campaign(const CampaignOptionsCli& opt, int argc, char** argv) {
   if (parts.empty()) {
     throw InputError(opt.dir, 0, "", "holds no shard files (*.h5 written by `campaign run`)");
   }
+  // nor one of them elsewhere, through a link (issue 24)
+  check_not_an_input("--out", opt.out, parts);
   const auto t0 = Clock::now();
   std::optional<CampaignTable> merged;
   std::map<std::int64_t, std::string> where;  // run id -> the file it came from
@@ -470,13 +478,27 @@ int merge_campaign(const CampaignOptionsCli& opt, int argc, char** argv) {
       merged->runs.push_back(std::move(r));
     }
   }
+  // the campaign file and the case files the parts name are inputs too: merge
+  // reads them to name the shards of missing runs, and they are the user's
+  // (issue 24)
+  {
+    std::vector<NamedInput> inputs = {{"the campaign file of the parts", merged->source_path}};
+    for (const auto& c : merged->cases) inputs.push_back({"case file of the campaign", c.path});
+    check_spares_inputs("--out", opt.out, inputs);
+  }
   if (!duplicates.empty()) {
+    // one line, like every error: the first 20 pairs, "; "-separated
     std::string list;
-    for (std::size_t i = 0; i < duplicates.size() && i < 20; ++i) list += "\n  " + duplicates[i];
+    for (std::size_t i = 0; i < duplicates.size() && i < 20; ++i) {
+      list += (i ? "; " : "") + duplicates[i];
+    }
     throw InputError(opt.dir, 0, "",
                      fmt::format("{} run(s) are in two files (two jobs ran the same shard?); "
-                                 "remove one of each pair:{}{}",
-                                 duplicates.size(), list, duplicates.size() > 20 ? "\n  ..." : ""));
+                                 "remove one of each pair: {}{}",
+                                 duplicates.size(), list,
+                                 duplicates.size() > 20
+                                     ? fmt::format("; ... and {} more", duplicates.size() - 20)
+                                     : ""));
   }
   std::vector<std::int64_t> missing;
   for (std::int64_t id = 0; id < merged->planned_runs; ++id) {
@@ -507,17 +529,18 @@ int merge_campaign(const CampaignOptionsCli& opt, int argc, char** argv) {
         // no hint: the campaign file moved or changed
       }
     }
+    // one line, like every error: the first 20 runs, "; "-separated
     std::string list;
     for (std::size_t i = 0; i < missing.size() && i < 20; ++i) {
-      list += "\n  " + describe_run(*merged, missing[i]);
+      list += (i ? "; " : "") + describe_run(*merged, missing[i]);
     }
     throw InputError(opt.dir, 0, "",
                      fmt::format("{} of {} runs are missing: resubmit their shards{} (`campaign "
-                                 "run {} --shard K/N --out {}` runs only what is missing):{}{}",
+                                 "run {} --shard K/N --out {}` runs only what is missing): {}{}",
                                  missing.size(), merged->planned_runs, shards_hint,
                                  merged->source_path.empty() ? "FILE" : merged->source_path,
                                  opt.dir, list,
-                                 missing.size() > 20 ? fmt::format("\n  ... and {} more", missing.size() - 20) : ""));
+                                 missing.size() > 20 ? fmt::format("; ... and {} more", missing.size() - 20) : ""));
   }
   std::sort(merged->runs.begin(), merged->runs.end(),
             [](const CampaignRun& a, const CampaignRun& b) { return a.id < b.id; });

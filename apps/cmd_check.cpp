@@ -15,6 +15,7 @@
 #include "planarbench/engines.hpp"
 #include "planarbench/errors.hpp"
 #include "planarbench/output_file.hpp"
+#include "planarbench/reports/run_validity.hpp"
 #include "planarbench/reports/thresholds.hpp"
 #include "planarbench/results_file.hpp"
 
@@ -52,6 +53,7 @@ int run_check(const CheckOptions& opt) {
 
   std::vector<MetricValue> metrics;
   std::vector<std::string> diverged;
+  std::vector<InvalidRun> invalid;  // NaN or inf in a run's samples: its checks fail
   for (const auto& cr : results.cases) {
     // the case as it was run: its text under the --set case keys stored with it
     SettingsOverrides case_keys;
@@ -61,16 +63,18 @@ int run_check(const CheckOptions& opt) {
     const Case c = parse_case(cr.case_text, cr.case_path, cr.case_name, case_keys);
     auto m = case_metrics(c, cr);
     metrics.insert(metrics.end(), m.begin(), m.end());
+    const auto bad = invalid_runs(cr);
+    invalid.insert(invalid.end(), bad.begin(), bad.end());
     for (const auto& r : cr.runs) {
       if (r.status == RunStatus::diverged) {
         diverged.push_back(fmt::format("{}.{}: {}", cr.case_name, r.engine_name, r.reason));
       }
     }
   }
-  const auto outcomes = check_thresholds(thresholds, metrics);
+  const auto outcomes = check_thresholds(thresholds, metrics, invalid);
 
-  (void)write_text_atomically("--junit", junit, junit_xml(outcomes, diverged));
-  (void)write_text_atomically("--summary", summary, markdown_summary(outcomes, diverged));
+  (void)write_text_atomically("--junit", junit, junit_xml(outcomes, diverged, invalid));
+  (void)write_text_atomically("--summary", summary, markdown_summary(outcomes, diverged, invalid));
 
   std::size_t failed = 0;
   std::size_t known = 0;
@@ -90,12 +94,15 @@ int run_check(const CheckOptions& opt) {
                 o.message.c_str(), o.threshold.why.c_str());
   }
   for (const auto& d : diverged) std::printf("DIVERGED %s\n", d.c_str());
+  for (const auto& f : invalid) std::printf("INVALID %s\n", f.describe().c_str());
   std::printf(
       "%zu of %zu checks passed, %zu breached, %zu known breach(es) (engines that cannot meet "
-      "their band, not failing the gate), %zu run(s) diverged\n",
-      outcomes.size() - failed - known, outcomes.size(), failed, known, diverged.size());
+      "their band, not failing the gate), %zu run(s) diverged, %zu dataset(s) of invalid data "
+      "(NaN or inf)\n",
+      outcomes.size() - failed - known, outcomes.size(), failed, known, diverged.size(),
+      invalid.size());
   if (!diverged.empty()) return kExitEngineFailed;
-  return failed ? kExitToleranceBreached : kExitOk;
+  return failed > 0 || !invalid.empty() ? kExitToleranceBreached : kExitOk;
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "campaign_plan.hpp"
+#include "campaign_shards.hpp"
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "impact_models.hpp"
@@ -134,6 +135,35 @@ void print_summary(const CampaignTable& t, const char* section) {
   }
 }
 
+// A --work folder's own files, which fit and merge read and write:
+// WORK/study.json and WORK/tasks/*.json (impact_tasks.hpp).
+bool in_work_folder(const fs::path& work, const fs::path& p) {
+  std::error_code ec, ec2;
+  const fs::path w = fs::weakly_canonical(work, ec);
+  const fs::path c = fs::weakly_canonical(p, ec2);
+  if (ec || ec2) return false;
+  return c == w / "study.json" || (c.parent_path() == w / "tasks" && c.extension() == ".json");
+}
+
+// --data and --out against each other and against the --work folder's files
+// (issue 24): a task or the study written over the data, the fit file
+// written over the study or a task
+void check_work_spares_inputs(const ImpactsOptions& opt) {
+  if (!opt.out.empty()) check_not_an_input("--out", opt.out, {opt.data});
+  if (opt.work.empty()) return;
+  const std::string allowed = fmt::format(
+      "a file of the --work folder '{}' (its study.json and tasks/*.json); give another file",
+      opt.work);
+  if (in_work_folder(opt.work, opt.data)) {
+    throw InputError("--data", 0, opt.data,
+                     "names a file this command also reads or writes: " + allowed);
+  }
+  if (!opt.out.empty() && in_work_folder(opt.work, opt.out)) {
+    throw InputError("--out", 0, opt.out,
+                     "names a file this command also reads or writes: " + allowed);
+  }
+}
+
 // prints the table's summary (unless quiet) and writes it to --out
 int write_study(const ImpactsOptions& opt, CampaignTable table, const char* section) {
   if (!opt.quiet) print_summary(table, section);
@@ -220,10 +250,8 @@ int run_fit(const ImpactsOptions& opt) {
   if (!opt.shard.empty() && opt.work.empty()) {
     throw InputError("--shard", 0, opt.shard, "needs --work DIR, the folder the shards share");
   }
-  if (!opt.out.empty()) {
-    check_output_file("--out", opt.out);
-    check_not_an_input("--out", opt.out, {opt.data});
-  }
+  if (!opt.out.empty()) check_output_file("--out", opt.out);
+  check_work_spares_inputs(opt);
   const LoadedData d = load_data(opt);
   const auto models = impact_models(opt.engine, !d.set.models.empty());
   std::vector<std::string> names;
@@ -248,6 +276,7 @@ int run_fit(const ImpactsOptions& opt) {
 
 int run_merge(const ImpactsOptions& opt) {
   check_output_file("--out", opt.out);
+  check_work_spares_inputs(opt);
   const nlohmann::json study = read_study(opt.work);
   const LoadedData d = load_data(opt);
   if (study.at("data_sha256").get<std::string>() != d.set.sha256) {

@@ -1,7 +1,9 @@
 // planarbench report: the HTML + Markdown report of a results file (SPEC §6).
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
+#include "cli_common.hpp"
 #include "commands.hpp"
 #include "threshold_names.hpp"
 #include "planarbench/errors.hpp"
@@ -20,6 +22,38 @@ struct ReportOptionsCli {
   std::string impacts;
   bool quiet = false;
 };
+
+namespace fs = std::filesystem;
+
+// The report writes report.html, report.md and figures/*.svg inside --out:
+// none of them may replace an input (issue 24), also through a link there.
+// The figures' names are known only once the inputs are read, so every
+// figures/*.svg is held to it: those already there (a link among them would
+// be followed) and any input named like one.
+void check_report_spares_inputs(const ReportOptionsCli& opt) {
+  const std::vector<NamedInput> inputs = {{"the results file", opt.results},
+                                          {"--thresholds", opt.thresholds},
+                                          {"--sweep", opt.sweep},
+                                          {"--campaign", opt.campaign},
+                                          {"--impacts", opt.impacts}};
+  const fs::path dir = opt.out;
+  const fs::path figures = dir / "figures";
+  std::vector<fs::path> outputs = {dir / "report.html", dir / "report.md"};
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(figures, ec)) {
+    if (e.path().extension() == ".svg") outputs.push_back(e.path());
+  }
+  const fs::path figures_canonical = fs::weakly_canonical(figures, ec);
+  for (const auto& in : inputs) {
+    if (in.path.empty() || in.path.extension() != ".svg") continue;
+    if (fs::weakly_canonical(in.path, ec).parent_path() == figures_canonical) outputs.push_back(in.path);
+  }
+  for (const auto& out : outputs) {
+    check_spares_inputs("--out", out, inputs,
+                        "give another --out folder (the report writes report.html, report.md and "
+                        "figures/*.svg in it)");
+  }
+}
 
 int run_report(const ReportOptionsCli& opt) {
   ReportOptions options;
@@ -40,6 +74,7 @@ int run_report(const ReportOptionsCli& opt) {
     throw InputError("--thresholds", 0, "",
                      "needs a results file (the sweep has no metrics to check)");
   }
+  check_report_spares_inputs(opt);
   const ReportSummary s = write_report(options);
   if (!opt.quiet) {
     std::printf("wrote %s and %s (%zu figures, %zu SVG files, %zu metrics", s.html.c_str(),

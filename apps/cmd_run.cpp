@@ -1,7 +1,9 @@
 // planarbench run: every (case, engine) of the selection into one results file.
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <mutex>
@@ -15,6 +17,7 @@
 #include "planarbench/output_file.hpp"
 #include "planarbench/results_file.hpp"
 #include "planarbench/runner.hpp"
+#include "run_isolation.hpp"
 #include "sweep_plan.hpp"
 #include "task_scheduler.hpp"
 
@@ -31,7 +34,37 @@ struct RunOptionsCli {
   int repeat = 1;
   bool quiet = false;
   std::string cases_dir;
+  std::string isolation = "process";
+  double run_timeout_s = 3600.0;
+  int progress_fd = -1;  // a child's: write the fraction done there
 };
+
+// a run whose process ended without its results: what the parent knows of it
+// (the engine's version and settings, the case's bodies), as an unsupported
+// run has them
+void describe_lost_run(RunResult& r, const Case& c, const SettingsOverrides& settings) {
+  auto engine = make_engine(r.engine_name);
+  engine->settings().apply(settings);
+  r.engine_version = engine->version();
+  r.settings = engine->settings().to_json();
+  r.mapping = {{"physics", physics_json(engine->physics())}};
+  r.body_names.clear();
+  for (const auto& b : c.bodies) r.body_names.push_back(b.name);
+}
+
+// --run-timeout: 0 (none) or a finite number of seconds, at most 30 days
+void check_run_timeout(double s) {
+  if (!std::isfinite(s) || s < 0.0 || s > 30.0 * 86400.0) {
+    throw InputError("--run-timeout", 0, "",
+                     fmt::format("must be 0 (no limit) or seconds in (0, 2592000] (got {})", s));
+  }
+}
+
+// a child's progress, one fraction per line on the descriptor its parent gave
+void write_progress(int fd, double f) {
+  const std::string line = fmt::format("{:.6f}\n", f);
+  [[maybe_unused]] const auto n = ::write(fd, line.data(), line.size());
+}
 
 // one (case, engine) of the matrix
 struct Task {
@@ -76,8 +109,10 @@ class Progress {
 int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
   // every option is checked before a case is read or anything runs, the
   // output folder included (fail fast, write nothing)
+  if (opt.progress_fd >= 0) die_with_parent();  // a child of an isolated run
   check_jobs(opt.jobs);
   check_repeat(opt.repeat);
+  check_run_timeout(opt.run_timeout_s);
   // the runs' samples stream to the results file's folder as they are made
   const std::filesystem::path out_target = output_target("--out", opt.out);
   check_engine_spec(opt.engine_spec);
@@ -127,6 +162,11 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
     layout.cases.push_back(std::move(cr));
   }
   ResultsFileWriter writer(opt.out, layout);
+  if (opt.isolation == "process") {
+    remove_stale_child_folders(out_target.parent_path().empty() ? std::filesystem::path(".")
+                                                                : out_target.parent_path(),
+                               out_target);
+  }
   std::vector<RunStatus> statuses(tasks.size(), RunStatus::ok);
   Progress progress(opt.quiet, tasks.size());
   std::vector<SchedulerTask> plan;
@@ -149,31 +189,62 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
       const std::string what = fmt::format("{} x {}", c.name, task.engine);
       try {
         progress.started(i, what);
-        auto engine = make_engine(task.engine);
         auto last = std::chrono::steady_clock::now();
-        RunOptions ro;
-        ro.progress = [&](double f) { progress.fraction(i, what, f, last); };
-        ro.spool_dir = out_target.parent_path().empty() ? std::filesystem::path(".")
-                                                        : out_target.parent_path();
-        RunResult r = run_engine(*engine, c, case_engine_settings[task.case_index], ro);
-        // repeats of an ok run, for its cost only: the same bits each time
-        // (deterministic engines; their samples spool and are dropped), the
-        // median wall time is the run's, every one is kept
-        if (opt.repeat > 1 && r.status == RunStatus::ok) {
-          std::vector<double> walls{r.wall_time_s};
-          RunOptions again = ro;
-          again.progress = nullptr;
-          for (int k = 1; k < opt.repeat; ++k) {
-            auto fresh = make_engine(task.engine);
-            walls.push_back(
-                run_engine(*fresh, c, case_engine_settings[task.case_index], again).wall_time_s);
+        auto on_progress = [&](double f) {
+          if (opt.progress_fd >= 0) write_progress(opt.progress_fd, f);
+          progress.fraction(i, what, f, last);
+        };
+        const std::filesystem::path work_dir = out_target.parent_path().empty()
+                                                   ? std::filesystem::path(".")
+                                                   : out_target.parent_path();
+        const SettingsOverrides& settings = case_engine_settings[task.case_index];
+        RunResult r;
+        std::filesystem::path child_file;  // the run, written by its own process
+        std::shared_ptr<void> child_folder;
+        if (opt.isolation == "process") {
+          IsolatedRun spec;
+          spec.case_path = std::filesystem::absolute(paths[task.case_index]);
+          spec.case_name = c.name;
+          spec.engine = task.engine;
+          spec.set = opt.set;
+          spec.repeat = opt.repeat;
+          spec.duration_s = c.duration_s;
+          spec.timeout_s = opt.run_timeout_s;
+          spec.work_dir = work_dir;
+          spec.target = out_target;
+          IsolatedResult got = run_isolated(spec, on_progress);
+          r = std::move(got.run);
+          child_file = got.file;
+          child_folder = got.folder;
+          if (child_file.empty()) describe_lost_run(r, c, settings);
+        } else {
+          auto engine = make_engine(task.engine);
+          RunOptions ro;
+          ro.progress = on_progress;
+          ro.spool_dir = work_dir;
+          r = run_engine(*engine, c, settings, ro);
+          // repeats of an ok run, for its cost only: the same bits each time
+          // (deterministic engines; their samples spool and are dropped), the
+          // median wall time is the run's, every one is kept
+          if (opt.repeat > 1 && r.status == RunStatus::ok) {
+            std::vector<double> walls{r.wall_time_s};
+            RunOptions again = ro;
+            again.progress = nullptr;
+            for (int k = 1; k < opt.repeat; ++k) {
+              auto fresh = make_engine(task.engine);
+              walls.push_back(run_engine(*fresh, c, settings, again).wall_time_s);
+            }
+            r.wall_time_repeats_s = walls;
+            r.wall_time_s = median(walls);
           }
-          r.wall_time_repeats_s = walls;
-          r.wall_time_s = median(walls);
         }
         progress.finished(i, what, r);
         statuses[i] = r.status;
-        writer.write_run(task.case_index, i % engines.size(), r);
+        if (child_file.empty()) {
+          writer.write_run(task.case_index, i % engines.size(), r);
+        } else {
+          writer.copy_run(task.case_index, i % engines.size(), child_file);
+        }
       } catch (...) {
         std::lock_guard<std::mutex> lock(error_mutex);
         if (!first_error) first_error = std::current_exception();
@@ -225,6 +296,20 @@ Action add_run_command(CLI::App& app, int argc, char** argv) {
                   "wall time the median of all (each is kept in wall_time_repeats_s)")
       ->default_val(1);
   cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
+  cmd->add_option("--isolation", opt->isolation,
+                  "process: each run in a process of its own, so that an engine library's abort, "
+                  "assertion, crash or allocation failure, or a run past --run-timeout, ends that "
+                  "run only (marked diverged with what ended it); none: every run in this process "
+                  "(profilers, debuggers; one library's abort then ends the command)")
+      ->check(CLI::IsMember({"process", "none"}))
+      ->default_val("process");
+  cmd->add_option("--run-timeout", opt->run_timeout_s,
+                  "Wall-clock seconds one run (with its repeats) may take before it is stopped "
+                  "and marked diverged; 0: no limit (with --isolation process only)")
+      ->default_val(3600.0);
+  cmd->add_option("--progress-fd", opt->progress_fd,
+                  "(internal) file descriptor a child run writes its fraction done to")
+      ->group("");
   cmd->add_option("--cases-dir", opt->cases_dir,
                   "Folder of case files (default: $PLANARBENCH_CASES_DIR or the source tree's cases/)");
   return [opt, argc, argv] { return run_matrix(*opt, argc, argv); };

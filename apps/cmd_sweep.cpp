@@ -119,9 +119,12 @@ int run_sweep(const SweepOptionsCli& opt, int argc, char** argv) {
   const Overrides overrides = parse_overrides(opt.set);
   reject_swept_keys(overrides.engine_keys);
   const auto engines = sweep_engines(opt.engine_spec);
+  // the sweep file must not replace a case file it reads (issue 24)
+  const std::vector<fs::path> paths = case_paths(opt.case_spec, opt.cases_dir);
+  check_not_an_input("--out", opt.out, paths);
 
   std::vector<CasePlan> plans;
-  for (const auto& path : case_paths(opt.case_spec, opt.cases_dir)) {
+  for (const auto& path : paths) {
     CasePlan p;
     p.c = load_case(path, overrides.case_keys);
     p.base = engine_settings_for(p.c, overrides.engine_keys);

@@ -23,6 +23,19 @@ bool normal_float(double x) {
   return x >= static_cast<double>(FLT_MIN) && x <= static_cast<double>(FLT_MAX);
 }
 
+// |v| without overflow: Eigen's norm() squares first, so a finite speed of
+// 1e308 m/s came out as inf (issue 24); hypot is finite wherever |v| is
+double speed(const Vec2& v) { return std::hypot(v.x(), v.y()); }
+
+// how a message says a body's speed: the number, or, beyond the largest
+// double, the velocity as given
+std::string speed_text(const Vec2& v) {
+  const double s = speed(v);
+  if (std::isfinite(s)) return fmt::format("speed {:.4g} m/s", s);
+  return fmt::format("velocity ({:.4g}, {:.4g}) m/s, a speed beyond {:.4g} m/s,", v.x(), v.y(),
+                     DBL_MAX);
+}
+
 }  // namespace
 
 std::string refused_input_reason(const Case& c, double dt_s) {
@@ -48,11 +61,14 @@ std::string refused_input_reason(const Case& c, double dt_s) {
           b.name, b.mass_kg, b.inertia_kgm2, static_cast<double>(FLT_MIN),
           static_cast<double>(FLT_MAX));
     }
-    if (!(b.velocity_mps.norm() * dt_s < kMaxTranslation_m * kAtClamp)) {
+    if (!(speed(b.velocity_mps) * dt_s < kMaxTranslation_m * kAtClamp)) {
+      const double step_m = speed(b.velocity_mps) * dt_s;
       return fmt::format(
-          "moving body '{}': its initial speed {:.4g} m/s covers {:.4g} m in one step of {} s; "
-          "Box2D clamps a step at b2_maxTranslation = {} m: use a smaller box2d.dt",
-          b.name, b.velocity_mps.norm(), b.velocity_mps.norm() * dt_s, dt_s, kMaxTranslation_m);
+          "moving body '{}': its initial {} covers {} m in one step of {} s; Box2D clamps a "
+          "step at b2_maxTranslation = {} m: use a smaller box2d.dt",
+          b.name, speed_text(b.velocity_mps),
+          std::isfinite(step_m) ? fmt::format("{:.4g}", step_m) : fmt::format("more than {:.4g}", DBL_MAX),
+          dt_s, kMaxTranslation_m);
     }
     if (!(std::abs(b.angular_velocity_radps) * dt_s < kMaxRotation_rad * kAtClamp)) {
       return fmt::format(
@@ -66,13 +82,13 @@ std::string refused_input_reason(const Case& c, double dt_s) {
 }
 
 std::string clamped_velocity_reason(const BodyState& s, double dt_s) {
-  const double step_m = s.velocity_mps.norm() * dt_s;
+  const double step_m = speed(s.velocity_mps) * dt_s;
   const double turn_rad = std::abs(s.angular_velocity_radps) * dt_s;
   if (step_m >= kMaxTranslation_m * kAtClamp) {
     return fmt::format(
         "Box2D clamped its translation to b2_maxTranslation = {} m per step (|v| = {:.6g} m/s at "
         "dt = {} s): a runaway, or a speed this step cannot carry (use a smaller box2d.dt)",
-        kMaxTranslation_m, s.velocity_mps.norm(), dt_s);
+        kMaxTranslation_m, speed(s.velocity_mps), dt_s);
   }
   if (turn_rad >= kMaxRotation_rad * kAtClamp) {
     return fmt::format(
@@ -90,7 +106,7 @@ std::string injected_force_reason(const b2Body& body, const Body& case_body,
   // b2Island::Solve: v += h (gravityScale g + invMass f), w += h invI torque
   const Vec2 v = s.velocity_mps + dt_s * (gravity_mps2 + force_n / case_body.mass_kg);
   const double w = s.angular_velocity_radps + dt_s * torque_nm / case_body.inertia_kgm2;
-  const bool moves_too_far = !(v.norm() * dt_s < kMaxTranslation_m * kAtClamp);
+  const bool moves_too_far = !(speed(v) * dt_s < kMaxTranslation_m * kAtClamp);
   const bool turns_too_far = !(std::abs(w) * dt_s < kMaxRotation_rad * kAtClamp);
   if (!moves_too_far && !turns_too_far) return "";
   return fmt::format(
@@ -98,7 +114,7 @@ std::string injected_force_reason(const b2Body& body, const Body& case_body,
       "{:.4g} m/s, |omega| = {:.4g} rad/s: {:.4g} m and {:.4g} rad in one step of {} s, beyond "
       "Box2D's clamps b2_maxTranslation = {} m and b2_maxRotation = pi/2 per step; the explicit "
       "force law is running away (too stiff for this step: use a smaller box2d.dt)",
-      force_n.norm(), torque_nm, v.norm(), std::abs(w), v.norm() * dt_s, std::abs(w) * dt_s, dt_s,
+      speed(force_n), torque_nm, speed(v), std::abs(w), speed(v) * dt_s, std::abs(w) * dt_s, dt_s,
       kMaxTranslation_m);
 }
 

@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
+#include "planarbench/errors.hpp"
+
 namespace pb::internal::ode {
 
 namespace {
@@ -73,10 +77,14 @@ Vec2 contact_midpoint(const dContactGeom& g) {
 
 PairCollider::PairCollider(const Case& c, const OdeWorld& world)
     : case_(&c), world_(&world), buffer_(static_cast<std::size_t>(geom_pair_capacity(c))) {
-  const std::size_t n = c.bodies.size();
-  int pieces = 1;
-  for (std::size_t i = 0; i < n; ++i) pieces = std::max(pieces, world.geom_count(static_cast<int>(i)));
-  capacity_ = geom_pair_capacity(c) * pieces * pieces;
+  for (const ContactPair& cp : c.contacts) {
+    const long bound = pair_contact_bound(world.vertex_count(cp.body_a), world.vertex_count(cp.body_b));
+    capacity_ = static_cast<int>(std::max<long>(capacity_, bound));
+  }
+}
+
+long pair_contact_bound(int vertices_a, int vertices_b) {
+  return 2L * (static_cast<long>(vertices_a) + vertices_b) + kMinContactBuffer;
 }
 
 void PairCollider::collide(std::vector<PairContact>& out) {
@@ -121,7 +129,7 @@ void PairCollider::collide_geoms(int pair, dGeomID g, dGeomID h, PairContact& ou
   const int count = dCollide(o1, o2, static_cast<int>(buffer_.size()), buffer_.data(),
                              static_cast<int>(sizeof(dContactGeom)));
   out.contacts_reported += std::max(count, 0);
-  for (int k = 0; k < count && out.count < capacity_; ++k) {
+  for (int k = 0; k < count; ++k) {
     dContactGeom c = buffer_[static_cast<std::size_t>(k)];
     // keep the contact in the plane z = 0
     c.pos[2] = 0.0;
@@ -131,6 +139,12 @@ void PairCollider::collide_geoms(int pair, dGeomID g, dGeomID h, PairContact& ou
     c.normal[0] /= len;
     c.normal[1] /= len;
     if (cp.has_friction() && in_plane_duplicate(out, c)) continue;
+    if (out.count >= capacity_) {
+      throw EngineError(fmt::format(
+          "ode: pair '{}' has more than {} contacts in one step, the bound 2 (V_a + V_b) + {} "
+          "of its geoms' vertices (prisms 2 n, spheres and planes 1) its buffers are sized by",
+          cp.name, capacity_, kMinContactBuffer));
+    }
     out.geoms[static_cast<std::size_t>(out.count++)] = c;
   }
 }

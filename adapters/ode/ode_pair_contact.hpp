@@ -32,6 +32,22 @@ struct PairContact {
   int contacts_reported = 0;  // contacts dCollide gave (before dropping out-of-plane ones)
 };
 
+// The most contacts one case pair keeps in a step: 2 (V_a + V_b) + 16, V the
+// vertices of a body's geoms (a prism of n outline points has 2 n, a sphere
+// or a plane 1). ODE's colliders report, for a prism against a plane, the
+// prism's vertices below it (at most 2 n: V_a + V_b already); for a sphere,
+// one point; for two prisms, the corners of a side face clipped by the other
+// (at most 8, and only where the two overlap: in the plane, a piece touches
+// only pieces its edges cross, each edge counted in V). The factor 2 is the
+// margin over one contact per vertex. The buffers of a pair (contacts and
+// joint feedback, 88 + 128 bytes each in double precision) hold that many,
+// so an ODE run's contact memory is linear in the outline points:
+// (2 (V_a + V_b) + 16) x 216 bytes per pair, 3.5 MB for a 2000-point star on
+// the ground. More contacts is an EngineError (the run diverged, saying so),
+// never a silent drop. It replaced (2 n + 4) x pieces^2 per pair, the cube
+// of the points: 5.2 GB for a 300-point star (issue 24).
+[[nodiscard]] long pair_contact_bound(int vertices_a, int vertices_b);
+
 class PairCollider {
  public:
   PairCollider(const Case& c, const OdeWorld& world);

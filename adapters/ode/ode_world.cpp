@@ -114,6 +114,7 @@ void OdeWorld::build(const Case& c) {
   geoms_.assign(n, {});
   planar_.assign(n, false);
   descriptions_.resize(n);
+  vertex_counts_.assign(n, 0);
 
   for (std::size_t i = 0; i < n; ++i) {
     const Body& b = c.bodies[i];
@@ -129,8 +130,15 @@ void OdeWorld::build(const Case& c) {
       const PlaneCoefficients pc = halfplane_plane(b.position_m, b.angle_rad);
       gs.push_back(dCreatePlane(space_, pc.a, pc.b, pc.c, pc.d));
       descriptions_[i] = describe_shape_geom(b, ConvexPrism{});
+      vertex_counts_[i] = 1;
     } else {
+      const std::size_t prisms_before = prisms_.size();
       ShapeGeoms sg = create_shape_geoms(space_, b, prisms_);
+      int vertices = static_cast<int>(sg.geoms.size() - (prisms_.size() - prisms_before));
+      for (std::size_t k = prisms_before; k < prisms_.size(); ++k) {
+        vertices += static_cast<int>(prisms_[k]->point_count);
+      }
+      vertex_counts_[i] = vertices;
       gs = std::move(sg.geoms);
       descriptions_[i] = std::move(sg.description);
       const double cos_a = std::cos(b.angle_rad);

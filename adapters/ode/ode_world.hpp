@@ -47,6 +47,9 @@ class OdeWorld {
   [[nodiscard]] int geom_count(int i) const {
     return static_cast<int>(geoms_[static_cast<std::size_t>(i)].size());
   }
+  // the vertices of body i's geoms: a prism's 2 n (both faces), 1 for a
+  // sphere or a plane (the bound on its contacts, ode_pair_contact.hpp)
+  [[nodiscard]] int vertex_count(int i) const { return vertex_counts_[static_cast<std::size_t>(i)]; }
   // the case body index of a geom of this world (stored as the geom's data)
   [[nodiscard]] static int body_index_of(dGeomID g);
   [[nodiscard]] int body_count() const { return static_cast<int>(bodies_.size()); }
@@ -112,6 +115,7 @@ class OdeWorld {
   dJointGroupID contact_group_ = nullptr;
   std::vector<dBodyID> bodies_;
   std::vector<std::vector<dGeomID>> geoms_;
+  std::vector<int> vertex_counts_;
   std::vector<bool> planar_;                          // held by a Plane2D joint
   std::vector<std::unique_ptr<ConvexPrism>> prisms_;  // stable addresses for dCreateConvex
   std::vector<std::unique_ptr<int>> geom_data_;       // body index behind each geom's data

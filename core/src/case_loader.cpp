@@ -16,6 +16,7 @@
 #include "internal/case_overrides.hpp"
 #include "planarbench/did_you_mean.hpp"
 #include "internal/polygon_checks.hpp"
+#include "internal/start_overlap.hpp"
 #include "internal/toml_reader.hpp"
 #include "planarbench/errors.hpp"
 #include "planarbench/outline.hpp"
@@ -35,6 +36,11 @@ constexpr double kMaxOutputSamples = 1e7;       // duration / output_interval
 constexpr int kMaxOutlinePoints = 100000;
 constexpr int kMaxPolygonPoints = 10000;        // the self-intersection check is O(n^2)
 constexpr double kMaxSize_m = 1e4;              // m, radius, semi-axis, extent
+// m, the smallest radius or semi-axis: a positive size far smaller (a
+// denormal 1e-310 m) gives the body an area and an inertia that underflow to
+// 0, which would be blamed on the inertia; 1 nm is 10 times the default
+// contact threshold of 1e-10 m and leaves every area property a normal double
+constexpr double kMinSize_m = 1e-9;
 constexpr double kMaxCoordinate_m = 1e6;        // m, positions, anchors, polygon points
 constexpr double kMaxThreshold_m = 1e-3;        // m, contact distance threshold
 // Coulomb coefficient: measured pairs lie in [0, ~1.5] (rubber on concrete
@@ -137,11 +143,11 @@ Shape read_shape(const TableReader& s) {
   const std::string type = s.word("type", kShapeTypes);
   if (type == "circle") {
     s.only_keys({"type", "radius"}, "of a circle");
-    return Circle{s.real("radius", Range::positive(kMaxSize_m), "m")};
+    return Circle{s.real("radius", Range{kMinSize_m, kMaxSize_m}, "m")};
   }
   if (type == "ellipse") {
     s.only_keys({"type", "semi_axes"}, "of an ellipse");
-    const auto ab = s.pair("semi_axes", Range::positive(kMaxSize_m), "m");
+    const auto ab = s.pair("semi_axes", Range{kMinSize_m, kMaxSize_m}, "m");
     return Ellipse{ab[0], ab[1]};
   }
   if (type == "polygon") {
@@ -252,7 +258,7 @@ int body_ref(const TableReader& t, const toml::node& node, const std::string& fi
     std::vector<std::string> names;
     for (const auto& b : c.bodies) names.push_back(b.name);
     t.origins().fail(&node, field,
-                     fmt::format("no body named '{}'{}; bodies: {}", name,
+                     fmt::format("no body named {}{}; bodies: {}", echo_value(name),
                                  did_you_mean(name, names), join_words(names)));
   }
   return index;
@@ -444,6 +450,29 @@ void read_settings(const TableReader& t, const std::string& prefix,
 
 // ---- the whole case ------------------------------------------------------------------
 
+// no body of a contact pair starts with its centre inside the other
+// (internal/start_overlap.hpp says why); the error points at its position
+void check_start_overlaps(const Case& c, const std::vector<TableReader>& bodies) {
+  for (const ContactPair& cp : c.contacts) {
+    for (const auto& [inner, outer] : {std::pair{cp.body_b, cp.body_a}, std::pair{cp.body_a, cp.body_b}}) {
+      const Body& in = c.bodies[static_cast<std::size_t>(inner)];
+      const Body& out = c.bodies[static_cast<std::size_t>(outer)];
+      if (in.fixed && out.fixed) continue;                      // they never move
+      if (std::holds_alternative<HalfPlane>(in.shape)) continue;  // no centre of mass
+      const auto how = internal::point_inside_body(out, in.position_m);
+      if (!how) continue;
+      bodies[static_cast<std::size_t>(inner)].fail(
+          "position",
+          fmt::format("the centre of '{}' ({:.6g}, {:.6g}) m starts inside '{}' ({}), its partner "
+                      "in contact '{}': no engine can tell which way out (coincident or nested "
+                      "bodies are pushed along an arbitrary axis, a centre below the ground falls "
+                      "through); allowed: each centre outside the other body of its pairs (a "
+                      "shallow overlap, a pre-loaded contact, is fine)",
+                      in.name, in.position_m.x(), in.position_m.y(), out.name, *how, cp.name));
+    }
+  }
+}
+
 Case build_case(const toml::table& root, const Origins& origins) {
   const TableReader top(root, "", origins);
   top.only_keys(kTopKeys);
@@ -455,6 +484,7 @@ Case build_case(const toml::table& root, const Origins& origins) {
   for (const auto& b : bodies) c.bodies.push_back(read_body(b, default_outline_points, c.bodies));
   for (const auto& j : top.table_array("joints")) c.joints.push_back(read_joint(j, c));
   for (const auto& p : top.table_array("contacts")) c.contacts.push_back(read_contact(p, c));
+  check_start_overlaps(c, bodies);
   if (top.has("settings")) read_settings(top.subtable("settings"), "", c.settings);
   return c;
 }

@@ -46,24 +46,15 @@ std::string temporary_prefix(const fs::path& path) {
 
 // Removes the temporaries of earlier writers of the same target that were
 // killed mid-write (SIGKILL, OOM, power loss run no clean-up): those whose pid
-// names no process on this host (kill(pid, 0) fails with ESRCH; EPERM means
-// alive). A reused pid only delays the removal to a later run. Best effort:
-// the write it follows has already succeeded.
+// names no process on this host (names_dead_process). A reused pid only
+// delays the removal to a later run. Best effort: the write it follows has
+// already succeeded.
 void remove_stale_temporaries(const fs::path& dir, const fs::path& path) {
   const std::string prefix = temporary_prefix(path);
   std::error_code ec;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string file = it->path().filename().string();
-    if (file.rfind(prefix, 0) != 0) continue;
-    const std::string digits = file.substr(prefix.size());
-    // a pid: decimal, at most 7 digits (pid_max <= 2^22 on Linux)
-    if (digits.empty() || digits.size() > 7 ||
-        digits.find_first_not_of("0123456789") != std::string::npos) {
-      continue;
-    }
-    const long pid = std::stol(digits);
-    if (pid <= 0 || pid == static_cast<long>(::getpid())) continue;
-    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+    if (file.rfind(prefix, 0) != 0 || !names_dead_process(file.substr(prefix.size()))) continue;
     std::error_code ignored;
     fs::remove(it->path(), ignored);
   }
@@ -214,6 +205,18 @@ fs::path write_text_atomically(const std::string& option, const fs::path& path,
                        fmt::format("write failed ({})", std::strerror(errno)));
     }
   });
+}
+
+bool names_dead_process(const std::string& digits) {
+  // a pid: decimal, at most 7 digits (pid_max <= 2^22 on Linux)
+  if (digits.empty() || digits.size() > 7 ||
+      digits.find_first_not_of("0123456789") != std::string::npos) {
+    return false;
+  }
+  const long pid = std::stol(digits);
+  if (pid <= 0 || pid == static_cast<long>(::getpid())) return false;
+  // kill(pid, 0) fails with ESRCH for no such process; EPERM means alive
+  return ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
 }
 
 }  // namespace pb

@@ -21,9 +21,11 @@
 
 #include "internal/hdf5_attributes.hpp"
 #include "internal/hdf5_datasets.hpp"
+#include "internal/hdf5_copy.hpp"
 #include "internal/hdf5_handle.hpp"
 #include "internal/hdf5_sha256.hpp"
 #include "internal/results_layout.hpp"
+#include "internal/results_validation.hpp"
 #include "internal/run_spool_data.hpp"
 #include "planarbench/run_spool.hpp"
 #include "planarbench/build_info.hpp"
@@ -427,9 +429,12 @@ std::vector<Vec2> unflatten(const std::vector<double>& flat) {
 
 BodyTrajectory read_body(hid_t bodies, const std::string& name) {
   Hid g = open_group(bodies, name);
+  // dtypes, shapes and lengths before anything is read (results_validation.hpp)
+  internal::check_body_columns(g.get());
   BodyTrajectory b;
   b.name = name;
   b.time_s = internal::read_double_dataset(g.get(), "time", 0);
+  internal::check_sample_times(b.time_s, internal::object_path(g.get()) + "/time");
   b.position_m = unflatten(internal::read_double_dataset(g.get(), "position", 2));
   b.angle_rad = internal::read_double_dataset(g.get(), "angle", 0);
   b.velocity_mps = unflatten(internal::read_double_dataset(g.get(), "velocity", 2));
@@ -449,7 +454,8 @@ int body_index(const char (&cell)[internal::kNameBytes], const std::vector<std::
   throw Hdf5Error(object, fmt::format("row {}: body '{}' is not in body_names", row, name));
 }
 
-RunResult read_run(hid_t case_group, const std::string& case_name, const std::string& engine) {
+RunResult read_run(hid_t case_group, const std::string& case_name, const std::string& engine,
+                   bool samples = true) {
   Hid g = open_group(case_group, engine);
   const std::string object = internal::object_path(g.get());
   RunResult r;
@@ -469,6 +475,7 @@ RunResult read_run(hid_t case_group, const std::string& case_name, const std::st
   }
   r.steps = static_cast<long>(internal::read_int64_attribute(g.get(), "steps"));
   r.body_names = internal::read_strings(g.get(), "body_names");
+  if (!samples) return r;
 
   // bodies are absent for unsupported runs
   if (H5Lexists(g.get(), "bodies", H5P_DEFAULT) > 0) {
@@ -699,6 +706,8 @@ struct ResultsFileWriter::State {
   std::vector<std::vector<bool>> written;
   State(const fs::path& p) : out("--out", p), path(p) {}
   void open();  // creates the temporary with the header, once
+  // the group of a run not written yet, the file open (caller holds mutex)
+  const std::string& begin_run(std::size_t case_index, std::size_t run_index);
 };
 
 namespace {
@@ -761,15 +770,18 @@ void ResultsFileWriter::State::open() {
 
 ResultsFileWriter::~ResultsFileWriter() = default;
 
+const std::string& ResultsFileWriter::State::begin_run(std::size_t case_index, std::size_t run_index) {
+  const std::string& object = run_groups.at(case_index).at(run_index);
+  if (written[case_index][run_index]) throw std::logic_error(object + ": written twice");
+  open();
+  return object;
+}
+
 void ResultsFileWriter::write_run(std::size_t case_index, std::size_t run_index,
                                   const RunResult& r) {
   State& st = *state_;
   std::lock_guard<std::mutex> lock(st.mutex);
-  const std::string& object = st.run_groups.at(case_index).at(run_index);
-  if (st.written[case_index][run_index]) {
-    throw std::logic_error(object + ": written twice");
-  }
-  st.open();
+  const std::string& object = st.begin_run(case_index, run_index);
   try {
     Hid g = internal::owned_group(H5Gopen2(st.file.get(), object.c_str(), H5P_DEFAULT), object,
                                   "cannot open the group");
@@ -784,6 +796,28 @@ void ResultsFileWriter::write_run(std::size_t case_index, std::size_t run_index,
   // the run's chunks are in the file: let the disk take them while the
   // other runs simulate (strace of the full matrix, --jobs 2: commit's fsync
   // of the 27 MB file took 55 ms before, 27 .. 39 ms after in 3 runs)
+  st.out.start_writeback();
+}
+
+void ResultsFileWriter::copy_run(std::size_t case_index, std::size_t run_index,
+                                 const fs::path& source) {
+  State& st = *state_;
+  std::lock_guard<std::mutex> lock(st.mutex);
+  const std::string& object = st.begin_run(case_index, run_index);
+  try {
+    internal::QuietHdf5 quiet;
+    Hid src = internal::owned_file(H5Fopen(source.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), object,
+                                   fmt::format("cannot open '{}'", source.string()));
+    Hid from = internal::owned_group(H5Gopen2(src.get(), object.c_str(), H5P_DEFAULT), object,
+                                     fmt::format("cannot open the group in '{}'", source.string()));
+    Hid to = internal::owned_group(H5Gopen2(st.file.get(), object.c_str(), H5P_DEFAULT), object,
+                                   "cannot open the group");
+    internal::copy_group_contents(from.get(), to.get(), child_names(from.get()), object);
+    to.close(object);
+  } catch (const Hdf5Error& e) {
+    rethrow_as_write_error(st.path, e);
+  }
+  st.written[case_index][run_index] = true;
   st.out.start_writeback();
 }
 
@@ -845,6 +879,26 @@ ResultsFile read_results_file(const fs::path& path) {
     ResultsFile results = read_file(f.get());
     f.close("/");
     return results;
+  } catch (const Hdf5Error& e) {
+    throw InputError(file, 0, e.object(), e.what_is_wrong());
+  }
+}
+
+RunResult read_run_header(const fs::path& path) {
+  internal::QuietHdf5 quiet;
+  const std::string file = path.string();
+  try {
+    Hid f = internal::owned_file(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "/",
+                                 "cannot open the file");
+    Hid runs = open_group(f.get(), "runs");
+    const auto cases = child_names(runs.get());
+    if (cases.size() != 1) throw Hdf5Error("/runs", fmt::format("holds {} cases, not 1", cases.size()));
+    Hid cg = open_group(runs.get(), cases[0]);
+    const auto engines = child_names(cg.get());
+    if (engines.size() != 1) {
+      throw Hdf5Error("/runs/" + cases[0], fmt::format("holds {} runs, not 1", engines.size()));
+    }
+    return read_run(cg.get(), cases[0], engines[0], false);
   } catch (const Hdf5Error& e) {
     throw InputError(file, 0, e.object(), e.what_is_wrong());
   }

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <new>
 #include <numbers>
 
 #include "planarbench/energy_budget.hpp"
@@ -105,8 +106,10 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
       }
     }
   };
+  bool building = true;
   try {
     engine.build(c, engine_overrides);
+    building = false;
     r.settings = engine.settings().to_json();
     for (int k = 0; k < n; ++k) {
       if (k > 0 && dense_left > 0) {
@@ -175,6 +178,14 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
     r.status = RunStatus::diverged;
     r.reason = e.what();
     r.diverged_at_s = engine.time();
+  } catch (const std::bad_alloc&) {
+    // an allocation the engine's model or step could not get: this run's
+    // failure, not the command's (the other runs go on)
+    r.status = RunStatus::diverged;
+    r.diverged_at_s = engine.time();
+    r.reason = fmt::format("out of memory: an allocation failed in {} {} at t = {:.9g} s",
+                           engine.name(), building ? "while building its model" : "while stepping",
+                           r.diverged_at_s);
   }
   r.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -15,7 +15,9 @@ namespace pb {
 namespace {
 
 [[noreturn]] void bad_value(const SettingValue& v, const std::string& key, const std::string& what) {
-  throw InputError(v.source.origin, v.source.line, key, fmt::format("{} (got '{}')", what, v.text));
+  // the value as given, cut when long (a 100000-digit value is not echoed whole)
+  throw InputError(v.source.origin, v.source.line, key,
+                   fmt::format("{} (got {})", what, echo_value(v.text)));
 }
 
 std::string trimmed(const std::string& s) {

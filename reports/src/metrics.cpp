@@ -13,6 +13,16 @@ namespace pb {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// the larger of a and b, NaN when either is: std::max(x, NaN) is x, and a
+// maximum error taken over a run with NaN samples would skip them (issue 24)
+double nan_max(double a, double b) {
+  return std::isnan(a) || std::isnan(b) ? kNaN : std::max(a, b);
+}
+double nan_min(double a, double b) {
+  return std::isnan(a) || std::isnan(b) ? kNaN : std::min(a, b);
+}
 
 // a run's body trajectory with repeated sample times removed (the last state
 // at a time wins), ready for linear interpolation
@@ -77,9 +87,9 @@ void trajectory_metrics(const Case& c, const RunResult& run, const RunResult& ba
       const double a = (1 - w) * tr.a[j] + w * tr.a[k];
       const double dp = (p - bb.position_m[i]).norm();
       const double dv = (v - bb.velocity_mps[i]).norm();
-      pos_max = std::max(pos_max, dp);
-      vel_max = std::max(vel_max, dv);
-      ang_max = std::max(ang_max, std::abs(a - bb.angle_rad[i]));
+      pos_max = nan_max(pos_max, dp);
+      vel_max = nan_max(vel_max, dv);
+      ang_max = nan_max(ang_max, std::abs(a - bb.angle_rad[i]));
       pos_sq += dp * dp;
       vel_sq += dv * dv;
       t_last = std::max(t_last, t);
@@ -218,15 +228,15 @@ std::vector<MetricValue> self_metrics(const Case& c, const RunResult& run) {
                             b.angular_velocity_radps[i];
       const double h = b.position_m[i].dot(up);
       energy[i] += ke + body.mass_kg * g * h;
-      ke_max = std::max(ke_max, ke);
-      h_min = std::min(h_min, h);
-      h_max = std::max(h_max, h);
+      ke_max = nan_max(ke_max, ke);
+      h_min = nan_min(h_min, h);
+      h_max = nan_max(h_max, h);
     }
     if (n > 0) pe_span += body.mass_kg * g * (h_max - h_min);
     times = b.time_s;
   }
   const double scale = ke_max + pe_span;
-  if (n > 1 && scale > 0.0) {
+  if (n > 1 && (scale > 0.0 || std::isnan(scale))) {
     // a sample is in contact within one grid interval of an episode
     const double dt = c.output_interval_s;
     auto in_contact = [&](double t) {
@@ -250,7 +260,7 @@ std::vector<MetricValue> self_metrics(const Case& c, const RunResult& run) {
         open = true;
       }
       any = true;
-      drift = std::max(drift, std::abs(energy[i] - e0) / scale);
+      drift = nan_max(drift, std::abs(energy[i] - e0) / scale);
     }
     if (any) {
       auto m = metric(c, run, "self", "energy_drift", drift, 0.0, false, "1");
@@ -279,7 +289,7 @@ std::vector<MetricValue> self_metrics(const Case& c, const RunResult& run) {
       speed_scale += body.mass_kg * b.velocity_mps.front().norm();
     }
     const double p_scale = p0.norm() > 0.0 ? p0.norm() : speed_scale;  // kg m/s
-    if (p_scale > 0.0) {
+    if (p_scale > 0.0 || std::isnan(p_scale)) {
       double worst = 0.0;
       const double t0 = run.bodies.front().time_s.front();
       for (std::size_t i = 0; i < n; ++i) {
@@ -289,7 +299,7 @@ std::vector<MetricValue> self_metrics(const Case& c, const RunResult& run) {
                b.velocity_mps[i];
         }
         const double t = run.bodies.front().time_s[i] - t0;
-        worst = std::max(worst, (p - p0 - total_mass * t * c.gravity_mps2).norm() / p_scale);
+        worst = nan_max(worst, (p - p0 - total_mass * t * c.gravity_mps2).norm() / p_scale);
       }
       auto m = metric(c, run, "self", "momentum_drift", worst, 0.0, false, "1");
       m.note = p0.norm() > 0.0 ? "max |P(t) - P(0) - M g t| / |P(0)|"
@@ -309,7 +319,7 @@ std::vector<MetricValue> self_metrics(const Case& c, const RunResult& run) {
         const double th = b->angle_rad[i];
         const Vec2 r(std::cos(th) * j.anchor_local_m.x() - std::sin(th) * j.anchor_local_m.y(),
                      std::sin(th) * j.anchor_local_m.x() + std::cos(th) * j.anchor_local_m.y());
-        worst = std::max(worst, (b->position_m[i] + r - j.anchor_world_m).norm());
+        worst = nan_max(worst, (b->position_m[i] + r - j.anchor_world_m).norm());
       }
     }
     out.push_back(metric(c, run, "self", "constraint_drift", worst, 0.0, false, "m"));

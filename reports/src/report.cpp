@@ -5,6 +5,7 @@
 #include "planarbench/case_loader.hpp"
 #include "planarbench/errors.hpp"
 #include "planarbench/reports/metrics.hpp"
+#include "planarbench/reports/run_validity.hpp"
 #include "planarbench/reports/thresholds.hpp"
 #include "planarbench/results_file.hpp"
 #include "planarbench/sweep_file.hpp"
@@ -158,11 +159,14 @@ ReportSummary write_report(const ReportOptions& options) {
   // per case: the case model, its figures, its metrics
   std::vector<Case> cases;
   std::vector<MetricValue> metrics;
+  std::vector<InvalidRun> invalid;  // NaN or inf in a run's samples: its checks fail
   for (const auto& cr : results.cases) {
     cases.push_back(case_of(cr));
     report.cases.push_back(case_section(cases.back(), cr, limits));
     auto m = case_metrics(cases.back(), cr);
     metrics.insert(metrics.end(), m.begin(), m.end());
+    const auto bad = invalid_runs(cr);
+    invalid.insert(invalid.end(), bad.begin(), bad.end());
     for (const auto* r : internal::runs_in_report_order(cr)) {
       report.mappings.push_back(internal::MappingEntry{cr.case_name, r->engine_name,
                                                        run_status_name(r->status), r->mapping,
@@ -171,7 +175,7 @@ ReportSummary write_report(const ReportOptions& options) {
   }
   report.friction = internal::friction_section(
       cases, results, campaign.campaign ? &*campaign.campaign : nullptr, options.campaign.string());
-  const auto outcomes = check_thresholds(thresholds, metrics);
+  const auto outcomes = check_thresholds(thresholds, metrics, invalid);
   std::size_t failed = 0;
   std::size_t known = 0;
   for (const auto& o : outcomes) {

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <string_view>
+
 #include "report_mapping.hpp"
 #include "report_work_precision.hpp"
 
@@ -9,20 +12,83 @@ namespace pb::internal {
 
 namespace {
 
-std::string cell(const std::string& text) {
+bool word_char(char ch) {
+  return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
+         (static_cast<unsigned char>(ch) & 0x80) != 0;
+}
+
+// Text of the user's (a case's description, assumptions, name, a table cell)
+// as Markdown that shows it and nothing else (issue 24): on one line
+// (line breaks and other control characters to spaces), '<', '>' and '&' as
+// HTML entities (no raw HTML), and with a backslash the punctuation that
+// would make Markdown of it: \ ` * [ ] | ~, and '_' where it could open or
+// close emphasis (not inside a word: falling_ball stays as it is).
+std::string md_text(std::string_view text) {
   std::string out;
   out.reserve(text.size());
-  for (const char ch : text) {
-    if (ch == '|') {
-      out += "\\|";
-    } else if (ch == '\n' || ch == '\r') {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char ch = text[i];
+    if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) {
       out += ' ';
+    } else if (ch == '&') {
+      out += "&amp;";
+    } else if (ch == '<') {
+      out += "&lt;";
+    } else if (ch == '>') {
+      out += "&gt;";
+    } else if (ch == '\\' || ch == '`' || ch == '*' || ch == '[' || ch == ']' || ch == '|' ||
+               ch == '~') {
+      out += '\\';
+      out += ch;
+    } else if (ch == '_') {
+      const bool inside_word = i > 0 && i + 1 < text.size() && word_char(text[i - 1]) &&
+                               word_char(text[i + 1]);
+      if (!inside_word) out += '\\';
+      out += ch;
     } else {
       out += ch;
     }
   }
   return out;
 }
+
+// md_text at the start of a block (a paragraph, a list item): also no
+// heading (#), list item (- + 1. 1)) or setext underline (=) of its own
+std::string md_block(std::string_view text) {
+  while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+  std::string out = md_text(text);
+  if (out.empty()) return out;
+  if (out.front() == '#' || out.front() == '-' || out.front() == '+' || out.front() == '=') {
+    out.insert(0, 1, '\\');
+    return out;
+  }
+  std::size_t digits = 0;
+  while (digits < out.size() && out[digits] >= '0' && out[digits] <= '9') ++digits;
+  if (digits > 0 && digits < out.size() && (out[digits] == '.' || out[digits] == ')')) {
+    out.insert(digits, 1, '\\');
+  }
+  return out;
+}
+
+// text as a code span: fenced with one more backtick than its longest run
+// of backticks (padded when it starts or ends with one), on one line
+std::string md_code(std::string_view text) {
+  std::string body;
+  std::size_t run = 0;
+  std::size_t longest = 0;
+  for (const char ch : text) {
+    body += static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f ? ' ' : ch;
+    run = ch == '`' ? run + 1 : 0;
+    longest = std::max(longest, run);
+  }
+  const std::string fence(longest + 1, '`');
+  const bool pad = !body.empty() && (body.front() == '`' || body.back() == '`');
+  std::string out = fence;
+  out.append(pad ? " " : "").append(body).append(pad ? " " : "").append(fence);
+  return out;
+}
+
+std::string cell(const std::string& text) { return md_text(text); }
 
 // a GitHub anchor for a heading: lower case, spaces to '-', punctuation dropped
 std::string anchor(const std::string& heading) {
@@ -40,7 +106,7 @@ std::string anchor(const std::string& heading) {
 }
 
 void section_table(std::string& md, const Table& t) {
-  md += "## " + t.title + "\n\n";
+  md += "## " + md_text(t.title) + "\n\n";
   if (!t.note.empty()) md += t.note + "\n\n";
   md += t.rows.empty() ? "(none)\n\n" : markdown_table(t) + "\n";
 }
@@ -50,9 +116,10 @@ void section_table(std::string& md, const Table& t) {
 std::string work_precision_markdown(const Report& report) {
   std::string md = "## Work-precision\n\n" + report.work_precision_note + "\n\n";
   for (const auto& w : report.work_precision) {
-    md += "### " + w.name + "\n\n";
+    md += "### " + md_text(w.name) + "\n\n";
     md += "Truth: " + w.truth + (w.truth_note.empty() ? "" : " (" + w.truth_note + ")") + ".\n\n";
-    md += fmt::format("![{}: position error vs wall time]({})\n\n", w.name, work_precision_file(w));
+    md += fmt::format("![{}: position error vs wall time]({})\n\n", md_text(w.name),
+                      work_precision_file(w));
     if (!w.summary.note.empty()) md += w.summary.note + "\n\n";
     md += markdown_table(w.summary) + "\n";
     if (!w.not_plotted.empty()) {
@@ -73,10 +140,12 @@ std::string work_precision_markdown(const Report& report) {
 std::string campaign_markdown(const Report& report) {
   std::string md = "## Campaign\n\n" + report.campaign.note + "\n\n";
   for (const auto& c : report.campaign.cases) {
-    md += "### " + c.name + "\n\nTruth of position_error_m: " + c.truth + ".\n\n";
-    for (const auto& f : c.figures) md += fmt::format("![{}](figures/{}.svg)\n\n", f.title, f.id);
+    md += "### " + md_text(c.name) + "\n\nTruth of position_error_m: " + c.truth + ".\n\n";
+    for (const auto& f : c.figures) {
+      md += fmt::format("![{}](figures/{}.svg)\n\n", md_text(f.title), f.id);
+    }
     for (const auto& t : c.tables) {
-      md += "#### " + t.title + "\n\n";
+      md += "#### " + md_text(t.title) + "\n\n";
       if (!t.note.empty()) md += t.note + "\n\n";
       md += (t.rows.empty() ? std::string("(none)\n") : markdown_table(t)) + "\n";
     }
@@ -87,7 +156,7 @@ std::string campaign_markdown(const Report& report) {
 std::string friction_markdown(const Report& report) {
   const FrictionSection& f = report.friction;
   std::string md = "## Friction\n\n" + f.note + "\n\n";
-  for (const auto& fig : f.figures) md += fmt::format("![{}](figures/{}.svg)\n\n", fig.title, fig.id);
+  for (const auto& fig : f.figures) md += fmt::format("![{}](figures/{}.svg)\n\n", md_text(fig.title), fig.id);
   if (!f.curve.rows.empty()) {
     md += "### " + f.curve.title + "\n\n" + f.curve.note + "\n\n" + markdown_table(f.curve) + "\n";
   }
@@ -100,7 +169,7 @@ std::string impacts_markdown(const Report& report) {
   for (const auto& t : s.tables) {
     md += "### " + t.title + "\n\n" + t.note + "\n\n" + markdown_table(t) + "\n";
   }
-  for (const auto& fig : s.figures) md += fmt::format("![{}](figures/{}.svg)\n\n", fig.title, fig.id);
+  for (const auto& fig : s.figures) md += fmt::format("![{}](figures/{}.svg)\n\n", md_text(fig.title), fig.id);
   return md;
 }
 
@@ -141,18 +210,17 @@ std::string markdown_table(const Table& t) {
 std::string report_markdown(const Report& report) {
   std::string md = "# planarbench report\n\n";
   std::string files;
-  if (!report.results_file.empty()) files += fmt::format("Results file: `{}`", report.results_file);
-  if (!report.thresholds_file.empty()) {
-    files += fmt::format("; thresholds: `{}`", report.thresholds_file);
-  }
+  if (!report.results_file.empty()) files += "Results file: " + md_code(report.results_file);
+  if (!report.thresholds_file.empty()) files += "; thresholds: " + md_code(report.thresholds_file);
   if (!report.sweep_file.empty()) {
-    files += fmt::format("{}weep file: `{}`", files.empty() ? "S" : "; s", report.sweep_file);
+    files += fmt::format("{}weep file: {}", files.empty() ? "S" : "; s", md_code(report.sweep_file));
   }
   if (!report.campaign.file.empty()) {
-    files += fmt::format("{}ampaign file: `{}`", files.empty() ? "C" : "; c", report.campaign.file);
+    files += fmt::format("{}ampaign file: {}", files.empty() ? "C" : "; c", md_code(report.campaign.file));
   }
   if (!report.impacts.file.empty()) {
-    files += fmt::format("{}easured impacts: `{}`", files.empty() ? "M" : "; m", report.impacts.file);
+    files += fmt::format("{}easured impacts: {}", files.empty() ? "M" : "; m",
+                         md_code(report.impacts.file));
   }
   md += files + ".\n\n";
   if (!report.check_summary.empty()) md += "**Check:** " + report.check_summary + "\n\n";
@@ -165,31 +233,36 @@ std::string report_markdown(const Report& report) {
 
   // contents
   md += "Contents:\n";
-  for (const auto& c : report.cases) md += fmt::format("- [{}](#{})\n", c.name, anchor(c.name));
+  for (const auto& c : report.cases) md += fmt::format("- [{}](#{})\n", md_text(c.name), anchor(c.name));
   if (!report.work_precision.empty()) md += "- [Work-precision](#work-precision)\n";
   if (!report.campaign.cases.empty()) md += "- [Campaign](#campaign)\n";
   if (!report.friction.figures.empty()) md += "- [Friction](#friction)\n";
   if (!report.impacts.file.empty()) md += "- [Measured impacts](#measured-impacts)\n";
-  for (const auto& t : report.tables) md += fmt::format("- [{}](#{})\n", t.title, anchor(t.title));
+  for (const auto& t : report.tables) md += fmt::format("- [{}](#{})\n", md_text(t.title), anchor(t.title));
   if (!report.results_file.empty()) md += "- [Parameter mapping](#parameter-mapping)\n";
   md += "\n";
 
   for (const auto& c : report.cases) {
-    md += "## " + c.name + "\n\n" + c.description + "\n\n";
-    if (!c.paper.empty()) md += "Paper: " + c.paper + ". ";
+    // the case's own text (its file's name, description, paper, assumptions,
+    // --set values): shown as text, never as Markdown or HTML
+    md.append("## ").append(md_text(c.name)).append("\n\n").append(md_block(c.description));
+    md.append("\n\n");
+    if (!c.paper.empty()) md.append("Paper: ").append(md_text(c.paper)).append(". ");
     md += "Truth: " + c.truth + ".\n\n";
     if (!c.overrides.empty()) {
       md += "Overrides (`--set`):";
-      for (const auto& [k, v] : c.overrides) md += fmt::format(" `{}={}`", k, v);
+      for (const auto& [k, v] : c.overrides) md.append(" ").append(md_code(k + "=" + v));
       md += "\n\n";
     }
     if (!c.assumptions.empty()) {
       md += "Assumptions:\n";
-      for (const auto& a : c.assumptions) md += "- " + a + "\n";
+      for (const auto& a : c.assumptions) md.append("- ").append(md_block(a)).append("\n");
       md += "\n";
     }
     for (const auto& f : c.figures) {
-      for (const auto& v : figure_views(f)) md += fmt::format("![{}]({})\n\n", v.title, v.file);
+      for (const auto& v : figure_views(f)) {
+        md += fmt::format("![{}]({})\n\n", md_text(v.title), v.file);
+      }
       std::string notes;
       for (const auto& s : f.series) {
         if (!s.note.empty())
@@ -214,7 +287,7 @@ std::string report_markdown(const Report& report) {
       "## Parameter mapping\n\nHow each engine expressed each case's contact law, and what it "
       "could not express (each adapter's `mapping` attribute).\n\n";
   for (const auto& m : report.mappings) {
-    md += fmt::format("### {} / {} ({})\n\n", m.case_name, m.engine, m.status);
+    md += fmt::format("### {} / {} ({})\n\n", md_text(m.case_name), m.engine, m.status);
     if (m.not_expressed.empty()) {
       md += "Could not express: nothing recorded.\n\n";
     } else {

@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "planarbench/reports/run_validity.hpp"
 #include "report_figures.hpp"
 #include "report_tables.hpp"
 #include "report_work_precision_svg.hpp"
@@ -19,6 +20,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 struct Entry {
   std::string engine;
   RunStatus status = RunStatus::ok;
+  bool invalid_data = false;  // NaN or inf in its samples: failed, never ranked
   double error_m = kNaN;      // position_max against the baseline
   double cost = kNaN;         // wall s per simulated s (the median of the repeats)
   double cost_lo = kNaN;      // the repeats' range, wall s per simulated s
@@ -108,7 +110,8 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
       "the truth; x = times the best one's error; ms/s = wall milliseconds per simulated second "
       "(the median \u00b1 half the range of `run --repeat R`, relative; else one run; the "
       "Timings table has every run){}. Caveats: runs not ok, known "
-      "breaches (bands an engine's own model cannot meet), failed checks, unresolved impacts.",
+      "breaches (bands an engine's own model cannot meet), failed checks, unresolved impacts; a "
+      "run with NaN or inf in its samples is FAILED and not ranked.",
       work_precision.empty() ? ""
                              : "; '1e-3 m in' = the sweep's wall time to reach that error");
   t.columns = {"case", "truth", "best", "engines: error, m (x best, ms/s)", "caveats"};
@@ -118,13 +121,18 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
     const std::string against = c.truth == TruthKind::none ? "reference" : "truth";
     std::vector<Entry> entries;
     std::vector<std::string> caveats;
+    const auto invalid = invalid_runs(cr);
+    for (const auto& f : invalid) {
+      caveats.push_back(fmt::format("{} FAILED: invalid data in {}", f.engine, f.what()));
+    }
     for (const RunResult* r : runs_in_report_order(cr)) {
       if (r->engine_name == "analytic") continue;
       if (against == "reference" && r->engine_name == "reference") continue;
       Entry e;
       e.engine = r->engine_name;
       e.status = r->status;
-      if (r->status == RunStatus::ok) {
+      e.invalid_data = find_invalid(invalid, cr.case_name, r->engine_name) != nullptr;
+      if (r->status == RunStatus::ok && !e.invalid_data) {
         e.error_m = position_max(metrics, cr.case_name, r->engine_name, against);
         if (c.duration_s > 0.0) {
           e.cost = r->wall_time_s / c.duration_s;
@@ -132,7 +140,7 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
           e.cost_lo = lo / c.duration_s;
           e.cost_hi = hi / c.duration_s;
         }
-      } else {
+      } else if (r->status != RunStatus::ok) {
         caveats.push_back(fmt::format("{} {}: {}", r->engine_name, run_status_name(r->status),
                                       r->reason));
       }
@@ -154,6 +162,10 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
     std::string all;
     for (const Entry& e : entries) {
       if (!all.empty()) all += "; ";
+      if (e.invalid_data) {
+        all += fmt::format("{} FAILED (invalid data)", e.engine);
+        continue;
+      }
       if (!std::isfinite(e.error_m)) {
         all += fmt::format("{} {}", e.engine,
                            e.status == RunStatus::ok ? "no error computed" : run_status_name(e.status));
@@ -188,7 +200,7 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
     std::string caveat_text;
     for (const auto& k : caveats) caveat_text += (caveat_text.empty() ? "" : "; ") + k;
     t.rows.push_back({cr.case_name, truth_text(c.truth), best_text, all, caveat_text});
-    t.row_status.push_back("");
+    t.row_status.push_back(invalid.empty() ? "" : "fail");
   }
   return t;
 }

@@ -197,20 +197,42 @@ std::vector<Threshold> load_thresholds(const std::filesystem::path& path) {
 }
 
 bool fails_gate(const CheckOutcome& o) {
-  // a metric that was not computed fails whatever the threshold expects: a
-  // known breach is a value outside the band, not a missing run
-  if (o.value.metric.empty()) return true;
+  // a metric that was not computed, or computed from NaN, fails whatever the
+  // threshold expects: a known breach is a value outside the band, not a
+  // missing run or invalid data
+  if (o.value.metric.empty() || !o.invalid_data.empty()) return true;
   return o.threshold.known_breach.empty() ? !o.passed : o.passed;
 }
 
 const char* outcome_label(const CheckOutcome& o) {
+  if (!o.invalid_data.empty()) return "invalid data";
   if (o.threshold.known_breach.empty() || o.value.metric.empty()) return o.passed ? "pass" : "fail";
   return o.passed ? "unexpected pass" : "known breach";
 }
 
 std::vector<CheckOutcome> check_thresholds(const std::vector<Threshold>& thresholds,
-                                           const std::vector<MetricValue>& metrics) {
+                                           const std::vector<MetricValue>& metrics,
+                                           const std::vector<InvalidRun>& invalid) {
   std::vector<CheckOutcome> out;
+  // the run of a threshold, or its baseline, with invalid data: the outcome fails naming it
+  auto invalid_data = [&](const Threshold& th) -> std::string {
+    const std::string baseline = th.against == "truth"  ? std::string("analytic")
+                                 : th.against == "self" ? th.engine
+                                                        : th.against;
+    for (const std::string& engine : {th.engine, baseline}) {
+      if (const InvalidRun* f = find_invalid(invalid, th.case_name, engine)) {
+        return fmt::format("invalid data: {}{}; its metrics mean nothing",
+                           engine == th.engine ? "" : "the baseline ", f->describe());
+      }
+    }
+    return "";
+  };
+  auto mark_invalid = [&](CheckOutcome& o) {
+    o.invalid_data = invalid_data(o.threshold);
+    if (o.invalid_data.empty()) return;
+    o.passed = false;
+    o.message = o.invalid_data + (o.message.empty() ? "" : "; " + o.message);
+  };
   for (const auto& th : thresholds) {
     bool matched = false;
     for (const auto& m : metrics) {
@@ -235,6 +257,7 @@ std::vector<CheckOutcome> check_thresholds(const std::vector<Threshold>& thresho
             "engine cannot meet it ({}); remove known_breach",
             m.actual, m.desired, deviation, o.limit, th.known_breach);
       }
+      mark_invalid(o);
       out.push_back(o);
     }
     if (!matched) {
@@ -243,6 +266,7 @@ std::vector<CheckOutcome> check_thresholds(const std::vector<Threshold>& thresho
       o.limit = th.atol;
       o.message = "not computed: the run is missing, unsupported or diverged, or has no such "
                   "metric";
+      mark_invalid(o);
       out.push_back(o);
     }
   }
@@ -250,17 +274,24 @@ std::vector<CheckOutcome> check_thresholds(const std::vector<Threshold>& thresho
 }
 
 std::string junit_xml(const std::vector<CheckOutcome>& outcomes,
-                      const std::vector<std::string>& diverged_runs) {
-  std::size_t failures = diverged_runs.size();
+                      const std::vector<std::string>& diverged_runs,
+                      const std::vector<InvalidRun>& invalid) {
+  std::size_t failures = diverged_runs.size() + invalid.size();
   for (const auto& o : outcomes) failures += fails_gate(o) ? 1 : 0;
   std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  const std::size_t tests = outcomes.size() + diverged_runs.size() + invalid.size();
   x += fmt::format("<testsuites name=\"planarbench check\" tests=\"{}\" failures=\"{}\">\n",
-                   outcomes.size() + diverged_runs.size(), failures);
-  x += fmt::format("  <testsuite name=\"planarbench\" tests=\"{}\" failures=\"{}\">\n",
-                   outcomes.size() + diverged_runs.size(), failures);
+                   tests, failures);
+  x += fmt::format("  <testsuite name=\"planarbench\" tests=\"{}\" failures=\"{}\">\n", tests,
+                   failures);
   for (const auto& run : diverged_runs) {
     x += fmt::format("    <testcase classname=\"{}\" name=\"status\">\n", xml_escaped(run));
     x += fmt::format("      <failure message=\"run diverged\"/>\n    </testcase>\n");
+  }
+  for (const auto& f : invalid) {
+    x += fmt::format("    <testcase classname=\"{}\" name=\"data\">\n", xml_escaped(f.run()));
+    x += fmt::format("      <failure message=\"invalid data: {}\"/>\n    </testcase>\n",
+                     xml_escaped(f.what()));
   }
   for (const auto& o : outcomes) {
     x += fmt::format("    <testcase classname=\"{}.{}\" name=\"{}\">\n",
@@ -291,7 +322,8 @@ std::string junit_xml(const std::vector<CheckOutcome>& outcomes,
 }
 
 std::string markdown_summary(const std::vector<CheckOutcome>& outcomes,
-                             const std::vector<std::string>& diverged_runs) {
+                             const std::vector<std::string>& diverged_runs,
+                             const std::vector<InvalidRun>& invalid) {
   std::size_t failed = 0;
   std::size_t known = 0;
   for (const auto& o : outcomes) {
@@ -308,6 +340,7 @@ std::string markdown_summary(const std::vector<CheckOutcome>& outcomes,
                     diverged_runs.empty() ? ""
                                           : fmt::format("; {} run(s) diverged", diverged_runs.size()));
   for (const auto& r : diverged_runs) md += fmt::format("- **diverged**: {}\n", r);
+  for (const auto& f : invalid) md += fmt::format("- **invalid data**: {}\n", f.describe());
   if (failed + known == 0) return md;
   md += "| case | engine | metric | outcome | value | limit | why |\n|---|---|---|---|---|---|---|\n";
   std::size_t shown = 0;

@@ -43,7 +43,7 @@ struct Entry {
   std::vector<std::string> args;    // with placeholders, see corpus.toml
   int exit_code = -1;
   std::vector<std::string> expect;  // substrings of the one stderr line
-  std::vector<std::string> setup;   // good_results, good_case, big_file, readonly_dir
+  std::vector<std::string> setup;   // good_results, good_case, big_file, readonly_dir, damaged:KIND
 };
 
 // gtest prints parameters; the name says which entry it is
@@ -289,11 +289,20 @@ TEST_P(BadInput, IsRefusedWithOneClearLineAndNoFiles) {
       {"{out}", (tmp / "out.h5").string()}, {"{good}", (tmp / "good.h5").string()},
       {"{big}", (tmp / "big.toml").string()}, {"{readonly}", (tmp / "readonly").string()},
       {"{case}", (tmp / "case.toml").string()}, {"{fifo}", (tmp / "fifo").string()},
+      {"{damaged}", (tmp / "damaged.h5").string()},
       {"{fifolink}", (tmp / "fifolink").string()}, {"{dangling}", (tmp / "dangling").string()}};
   for (const auto& s : e.setup) {
     if (s == "good_results") {
       ASSERT_FALSE(good_results().empty()) << "could not make a valid results file";
       fs::copy_file(good_results(), tmp / "good.h5");
+    } else if (s.rfind("damaged:", 0) == 0) {
+      // a copy of the valid results file with one dataset damaged by
+      // tests/python/damage_results.py (h5py alone; the kinds are listed there)
+      ASSERT_FALSE(good_results().empty()) << "could not make a valid results file";
+      const std::string cmd = std::string(PB_PYTHON) + " " + PB_SOURCE_DIR +
+                              "/tests/python/damage_results.py " + good_results().string() + " " +
+                              (tmp / "damaged.h5").string() + " " + s.substr(8) + " 2>&1";
+      ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
     } else if (s == "good_case") {
       fs::copy_file(fs::path(PB_CASES_DIR) / "falling_ball.toml", tmp / "case.toml");
     } else if (s == "big_file") {
@@ -386,7 +395,11 @@ TEST(Corpus, HoldsAtLeastThirtyDistinctWellFormedEntries) {
   for (const auto& e : c.entries) {
     EXPECT_TRUE(valid_name(e.name)) << "name '" << e.name << "' is not [A-Za-z0-9_]+";
     EXPECT_TRUE(names.insert(e.name).second) << "name '" << e.name << "' is used twice";
-    EXPECT_TRUE(inputs.insert(e.args).second) << e.name << ": the same command line as another entry";
+    // the input is the command line and what the setup makes ({damaged} is
+    // a different file for each damage)
+    std::vector<std::string> input = e.args;
+    input.insert(input.end(), e.setup.begin(), e.setup.end());
+    EXPECT_TRUE(inputs.insert(input).second) << e.name << ": the same input as another entry";
     EXPECT_FALSE(e.what.empty()) << e.name << ": say what is wrong in `what`";
     EXPECT_FALSE(e.args.empty()) << e.name;
     EXPECT_EQ(e.exit_code, 2) << e.name << ": every corpus entry is bad input (exit 2)";

@@ -1,6 +1,7 @@
 // Tests for apps/campaign_plan.cpp: the campaign file read into its runs,
 // their order, their settings, the seeded perturbations and the shards.
 #include "campaign_plan.hpp"
+#include "campaign_shards.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

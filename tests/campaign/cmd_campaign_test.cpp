@@ -82,6 +82,39 @@ TEST(CmdCampaign, PlanCountsTheRunsAndEstimatesTheirCost) {
   EXPECT_NE(f.err.find("4 shards: "), std::string::npos) << f.err;
 }
 
+// A plan that takes more than a second says how far it is on stderr (issue
+// 24): 2,000,000 runs of one case and engine (nothing runs; the plan costs
+// each run and deals them to 4 shards), about 3 s on the 2-core machine of
+// the README, more under the sanitizers.
+TEST(CmdCampaign, ALongPlanPrintsProgressOnStderr) {
+  const fs::path dir = fresh_dir("plan_progress");
+  const fs::path toml = campaign_file(dir, R"(
+[campaign]
+cases = ["falling_ball"]
+engines = ["analytic"]
+metrics = ["events"]
+
+[[axis]]
+key = "output_interval"
+values = [1e-3, 2e-3, 3e-3, 4e-3]
+
+[[axis]]
+name = "state"
+key = "bodies.*.velocity"
+perturb = { sigma = 1e-2, samples = 500000, seed = 7 }
+)");
+  const auto t0 = std::chrono::steady_clock::now();
+  const Finished f = campaign({"plan", toml.string(), "--shards", "4"});
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_EQ(f.exit.code, 0) << f.err;
+  // progress is promised past a second: 1.5 s leaves half a second for the
+  // start of the process and the line's one-second clock to disagree
+  if (wall_s < 1.5) GTEST_SKIP() << "the plan took " << wall_s << " s: too fast to need progress";
+  EXPECT_NE(f.err.find("campaign plan: "), std::string::npos) << f.err;
+  EXPECT_NE(f.err.find(" of 2000000 runs"), std::string::npos) << f.err;
+  EXPECT_NE(f.err.find("planned in"), std::string::npos) << f.err;
+}
+
 TEST(CmdCampaign, ThreeShardsMergeToTheSameDatasetsAsOne) {
   const fs::path dir = fresh_dir("three");
   const fs::path toml = campaign_file(dir);
@@ -157,6 +190,7 @@ TEST(CmdCampaign, MergeWithAMissingShardExitsTwoNamingTheRuns) {
   // the first 20 named, with case, engine and axis points
   EXPECT_NE(m.err.find("x analytic, dt=0.0001, state="), std::string::npos) << m.err;
   EXPECT_NE(m.err.find("... and 4 more"), std::string::npos) << m.err;
+  EXPECT_EQ(std::count(m.err.begin(), m.err.end(), '\n'), 1) << m.err;  // one line (issue 24)
   EXPECT_FALSE(fs::exists(dir / "m.h5"));
 }
 
@@ -171,6 +205,10 @@ TEST(CmdCampaign, ARunInTwoFilesIsRefused) {
   const Finished m = campaign({"merge", (dir / "parts").string(), "--out", (dir / "m.h5").string()});
   EXPECT_EQ(m.exit.code, 2) << m.err;
   EXPECT_NE(m.err.find("36 run(s) are in two files"), std::string::npos) << m.err;
+  // one line, like every error (issue 24): the pairs follow on it, "; "-separated
+  EXPECT_EQ(std::count(m.err.begin(), m.err.end(), '\n'), 1) << m.err;
+  EXPECT_NE(m.err.find("remove one of each pair: run 0: "), std::string::npos) << m.err;
+  EXPECT_NE(m.err.find("; run 1: "), std::string::npos) << m.err;
   EXPECT_FALSE(fs::exists(dir / "m.h5"));
 }
 

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -242,6 +243,96 @@ TEST(Gate, BadThresholdsFileIsBadInput) {
   EXPECT_EQ(c.exit_code, 2) << c.output;
   EXPECT_TRUE(contains(c.output, "bad_thresholds.toml:5")) << c.output;
   EXPECT_TRUE(contains(c.output, "restitutoin")) << c.output;
+}
+
+// ---- invalid data (issue 24, point 4) ----------------------------------------------
+// A results file damaged by tests/python/damage_results.py (h5py alone): NaN in
+// a run's samples fails that run's checks (exit 1) naming the run and the
+// dataset; the reader refuses what breaks the layout (exit 2, the corpus).
+
+// analytic and mujoco on the falling ball, once for every test below
+const fs::path& falling_ball_mujoco() {
+  static const fs::path out = [] {
+    const auto p = work_dir() / "invalid_good.h5";
+    const auto r = run("run --case falling_ball --engine analytic,mujoco --quiet --out " +
+                       p.string());
+    return r.exit_code == 0 ? p : fs::path();
+  }();
+  return out;
+}
+
+// one threshold: mujoco's position_max against the truth, the committed band
+fs::path mujoco_position_thresholds() {
+  const auto p = work_dir() / "invalid_thresholds.toml";
+  std::ofstream f(p);
+  // 0.13 m: cases/thresholds.toml's band for this check (its `why` derives it);
+  // the valid file passes it, so only the damage can fail it
+  f << "[[threshold]]\ncase = \"falling_ball\"\nengine = \"mujoco\"\nagainst = \"truth\"\n"
+       "metric = \"position_max\"\natol = 0.13\nwhy = \"cases/thresholds.toml's band\"\n";
+  return p;
+}
+
+// `check` of a copy of the valid file with mujoco's run damaged as `kind`
+Outcome check_damaged(const std::string& kind) {
+  const auto damaged = work_dir() / ("invalid_" + kind + ".h5");
+  const std::string py = std::string(PB_PYTHON) + " " + PB_SOURCE_DIR +
+                         "/tests/python/damage_results.py " + falling_ball_mujoco().string() +
+                         " " + damaged.string() + " " + kind + " /runs/falling_ball/mujoco 2>&1";
+  if (std::system(py.c_str()) != 0) return Outcome{-1, "could not run " + py};
+  return run("check --thresholds " + mujoco_position_thresholds().string() + " " +
+             damaged.string());
+}
+
+TEST(Gate, ValidFileOfTheInvalidDataTestsPasses) {
+  ASSERT_FALSE(falling_ball_mujoco().empty());
+  const auto c = run("check --thresholds " + mujoco_position_thresholds().string() + " " +
+                     falling_ball_mujoco().string());
+  EXPECT_EQ(c.exit_code, 0) << c.output;
+}
+
+TEST(Gate, AllNanPositionsFailTheRunNamingItAndTheMetric) {
+  ASSERT_FALSE(falling_ball_mujoco().empty());
+  const auto c = check_damaged("position_nan_all");
+  EXPECT_EQ(c.exit_code, 1) << c.output;
+  EXPECT_TRUE(contains(c.output, "INVALID falling_ball.mujoco: "
+                                 "/runs/falling_ball/mujoco/bodies/ball/position"))
+      << c.output;
+  EXPECT_TRUE(contains(c.output, "BREACH falling_ball.mujoco position_max vs truth")) << c.output;
+  EXPECT_TRUE(contains(c.output, "invalid data")) << c.output;
+  EXPECT_FALSE(contains(c.output, " 1 of 1 checks passed")) << c.output;
+  // the JUnit XML names the run as a failure too
+  std::ifstream junit(work_dir() / "invalid_position_nan_all.junit.xml");
+  const std::string x((std::istreambuf_iterator<char>(junit)), std::istreambuf_iterator<char>());
+  EXPECT_TRUE(contains(x, "classname=\"falling_ball.mujoco\" name=\"data\"")) << x;
+}
+
+TEST(Gate, TenNanRowsFailTheRun) {
+  ASSERT_FALSE(falling_ball_mujoco().empty());
+  const auto c = check_damaged("position_nan_rows");
+  EXPECT_EQ(c.exit_code, 1) << c.output;
+  EXPECT_TRUE(contains(c.output, "INVALID falling_ball.mujoco: "
+                                 "/runs/falling_ball/mujoco/bodies/ball/position: 10 of"))
+      << c.output;
+  EXPECT_TRUE(contains(c.output, "row 100")) << c.output;
+}
+
+// the thresholds gate position only; a NaN velocity still fails the run
+TEST(Gate, NanVelocityFailsARunGatedOnItsPositionOnly) {
+  ASSERT_FALSE(falling_ball_mujoco().empty());
+  const auto c = check_damaged("velocity_nan");
+  EXPECT_EQ(c.exit_code, 1) << c.output;
+  EXPECT_TRUE(contains(c.output, "INVALID falling_ball.mujoco: "
+                                 "/runs/falling_ball/mujoco/bodies/ball/velocity"))
+      << c.output;
+}
+
+TEST(Gate, NanContactForceFailsTheRun) {
+  ASSERT_FALSE(falling_ball_mujoco().empty());
+  const auto c = check_damaged("force_nan");
+  EXPECT_EQ(c.exit_code, 1) << c.output;
+  EXPECT_TRUE(contains(c.output, "INVALID falling_ball.mujoco: /runs/falling_ball/mujoco/contacts"))
+      << c.output;
+  EXPECT_TRUE(contains(c.output, "force_n")) << c.output;
 }
 
 }  // namespace

@@ -453,7 +453,7 @@ TEST(BadInput, NonPositiveQuantities) {
   EXPECT_INPUT_ERROR(error_of(with("mass = 1.0", "mass = -1")), "t.toml", 14, "bodies[1].mass",
                      "t.toml:14: bodies[1].mass: must be a finite number > 0 (got -1), in kg");
   EXPECT_INPUT_ERROR(error_of(with("radius = 0.5", "radius = 0.0")), "t.toml", 13,
-                     "bodies[1].shape.radius", "must be a finite number in (0, 10000] (got 0)");
+                     "bodies[1].shape.radius", "must be a finite number in [1e-09, 10000] (got 0)");
   EXPECT_INPUT_ERROR(
       error_of(with("type = \"circle\", radius = 0.5", "type = \"ellipse\", semi_axes = [1.0, -0.5]")),
       "t.toml", 13, "bodies[1].shape.semi_axes[1]", "(got -0.5)");

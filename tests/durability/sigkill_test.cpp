@@ -40,29 +40,65 @@ void write_earlier_file(const fs::path& out) {
 }
 
 // starts the long run, waits for its first progress line on stderr (the
-// simulation has started), kills it with SIGKILL and reaps it
-void kill_after_first_progress_line(const fs::path& out) {
+// simulation has started), kills it with SIGKILL and reaps it; its pid
+pid_t kill_after_first_progress_line(const fs::path& out) {
   Pipe err;
   std::vector<std::string> args = kLongRun;
   args.insert(args.end(), {"--out", out.string()});
   const pid_t pid = spawn_planarbench(args, err.write_fd);
   err.close_write();
   std::string line;
-  ASSERT_TRUE(err.read_line(line)) << "no progress line before the end of stderr";
+  EXPECT_TRUE(err.read_line(line)) << "no progress line before the end of stderr";
   EXPECT_NE(line.find("[1/1] sliding_paper x reference"), std::string::npos) << line;
-  ASSERT_EQ(::kill(pid, SIGKILL), 0);
+  EXPECT_EQ(::kill(pid, SIGKILL), 0);
   const ChildExit e = wait_child(pid);
   // a signaled exit proves the kill, not a normal end, stopped the run
   EXPECT_TRUE(e.signaled && e.code == SIGKILL) << "exit " << e.code;
+  return pid;
+}
+
+// The folder of the run the killed command was waiting for, if it is there
+// (apps/run_isolation.hpp: each run is a process of its own, working in
+// `.results.h5.run.<pid>.<n>` beside the target; it ends with its parent,
+// and SIGKILL runs no clean-up): removes it and says so.
+bool remove_run_folder(const fs::path& dir, pid_t killed) {
+  const fs::path folder = dir / (".results.h5.run." + std::to_string(killed) + ".0");
+  const bool there = fs::exists(folder);
+  fs::remove_all(folder);
+  return there;
 }
 
 TEST(SigkillDuringSimulation, LeavesNoFileAtTheTarget) {
   const fs::path dir = fresh_dir("sigkill_no_target");
   const fs::path out = dir / "results.h5";
-  kill_after_first_progress_line(out);
+  const pid_t killed = kill_after_first_progress_line(out);
   EXPECT_FALSE(fs::exists(out));
-  // nothing at all: the temporary file is made only once the simulation is done
+  // nothing else: the temporary file is made only once the simulation is
+  // done; the run's own folder, if its process had started, is all there is
+  remove_run_folder(dir, killed);
   EXPECT_TRUE(dir_entries(dir).empty()) << dir_entries(dir).front();
+}
+
+// The next run to the same target removes a killed command's run folders
+// (their pid names no live process), as it removes its stale temporaries.
+TEST(SigkillDuringSimulation, TheNextRunRemovesTheKilledRunsFolder) {
+  const fs::path dir = fresh_dir("sigkill_next_run");
+  const fs::path out = dir / "results.h5";
+  std::vector<std::string> args = kLongRun;
+  args.insert(args.end(), {"--out", out.string()});
+  const pid_t pid = spawn_planarbench(args);
+  const fs::path folder = dir / (".results.h5.run." + std::to_string(pid) + ".0");
+  // the run's process is started (its folder made) soon after the command;
+  // polled, not timed: up to 2000 x 5 ms on a loaded machine
+  for (int i = 0; i < 2000 && !fs::exists(folder); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_TRUE(fs::exists(folder)) << "the run's folder never appeared";
+  ASSERT_EQ(::kill(pid, SIGKILL), 0);
+  static_cast<void>(wait_child(pid));
+  ASSERT_TRUE(fs::exists(folder));  // SIGKILL runs no clean-up
+  write_earlier_file(out);          // a complete run to the same target
+  EXPECT_EQ(dir_entries(dir), std::vector<std::string>{"results.h5"});
 }
 
 TEST(SigkillDuringSimulation, KeepsAnEarlierFileByteForByte) {
@@ -71,9 +107,10 @@ TEST(SigkillDuringSimulation, KeepsAnEarlierFileByteForByte) {
   write_earlier_file(out);
   const std::string before = file_bytes(out);
   ASSERT_GT(before.size(), 0u);
-  kill_after_first_progress_line(out);
+  const pid_t killed = kill_after_first_progress_line(out);
   ASSERT_TRUE(fs::exists(out));
   EXPECT_TRUE(file_bytes(out) == before) << "the earlier file changed";
+  remove_run_folder(dir, killed);
   EXPECT_EQ(dir_entries(dir), std::vector<std::string>{"results.h5"});
 }
 
@@ -174,6 +211,7 @@ class SigkillAnywhere : public ::testing::Test {
     std::this_thread::sleep_for(std::chrono::duration<double>(delay_s));
     ::kill(pid, SIGKILL);
     const ChildExit e = wait_child(pid);
+    killed_pids_.insert(std::to_string(pid));
     const fs::path tmp = dir_ / (".results.h5.tmp." + std::to_string(pid));
 
     // the target: the earlier bytes, nothing (when there was nothing), or the
@@ -214,6 +252,7 @@ class SigkillAnywhere : public ::testing::Test {
   double run_s_ = 0, last_run_done_s_ = 0, write_s_ = 0;  // s
   int runs_ = 0;                                          // runs in the matrix
   std::set<std::string> writing_pids_;                    // of the kills that left a temporary
+  std::set<std::string> killed_pids_;                     // of every kill
   double complete_bytes_ = 0;    // size of the uninterrupted run's file, bytes
   double written_fraction_ = 0;  // the last temporary's size / complete_bytes_
 };
@@ -243,10 +282,18 @@ TEST_F(SigkillAnywhere, TargetIsTheEarlierFileOrTheCompleteNewOne) {
 
   // a kill during the write leaves its own temporary (until a later complete
   // run removes it, if results_file.cpp sweeps them), and nothing else is left
+  // a kill also leaves the folder of the run it was waiting for, if any
+  // (`.results.h5.run.<pid>.<n>`, apps/run_isolation.hpp), until the next run
+  // to that target removes it: only the last kills' can be left
   const std::string prefix = ".results.h5.tmp.";
+  const std::string run_prefix = ".results.h5.run.";
   int temps = 0;
   for (const auto& name : dir_entries(dir_)) {
-    if (name.rfind(prefix, 0) == 0) {
+    if (name.rfind(run_prefix, 0) == 0) {
+      const std::string rest = name.substr(run_prefix.size());
+      EXPECT_EQ(killed_pids_.count(rest.substr(0, rest.find('.'))), 1u) << name;
+      fs::remove_all(dir_ / name);
+    } else if (name.rfind(prefix, 0) == 0) {
       ++temps;
       EXPECT_EQ(writing_pids_.count(name.substr(prefix.size())), 1u) << name;
       fs::remove(dir_ / name);  // megabytes each

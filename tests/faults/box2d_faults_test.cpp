@@ -28,6 +28,9 @@ TEST(Box2dFaults, InputsBox2dCannotTakeAreRefused) {
       {{{"bodies.ball.mass", "1e39"}}, "mass 1e+39 kg"},
       {{{"bodies.ball.mass", "1e-39"}}, "normal floats"},
       {{{"bodies.ball.velocity", "[1e39, 0.0]"}}, "initial speed 1e+39 m/s"},
+      // a speed whose square overflows double is still said as written (issue 24: was "inf")
+      {{{"bodies.ball.velocity", "[1e308, 0.0]"}}, "initial speed 1e+308 m/s covers 1e+304 m"},
+      {{{"bodies.ball.velocity", "[1.5e308, -1.5e308]"}}, "initial velocity (1.5e+308, -1.5e+308) m/s"},
       {{{"bodies.ball.angular_velocity", "1e5"}}, "b2_maxRotation"},
       // 1e5 m/s^2 moves a body 10 m in a 0.01 s step
       {{{"gravity", "[0.0, -1e5]"}, {"dt", "1e-2"}}, "gravity 1e+05 m/s^2"},

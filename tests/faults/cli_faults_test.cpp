@@ -143,4 +143,130 @@ TEST(CliFaults, EnergyRunawayIsDivergedAndNamed) {
   EXPECT_LT(b->diverged_at_s, 0.4965 + 5e-3);
 }
 
+
+// ---- run isolation (apps/run_isolation.cpp, issue 24) ----------------------------
+// Each run of `planarbench run` is a process of its own, so that an abort
+// inside an engine's library or a run past --run-timeout ends that run only:
+// it is written `diverged` with what ended it, the other runs are written
+// whole, the command exits 3.
+
+// a fresh folder of its own for a test that checks what is left in it
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::path(PB_WORK_DIR) / "isolation" / name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+// only the results file is left in the folder: no child's folder, no spool
+void expect_only(const fs::path& dir, const fs::path& file) {
+  for (const auto& e : fs::directory_iterator(dir)) {
+    EXPECT_EQ(e.path(), file) << "left behind: " << e.path();
+  }
+}
+
+// A spin of 1e200 rad/s, which the case format allows, trips libode's
+// dIASSERT in dxNormalize4 at its first step: SIGABRT. It ended the whole
+// command before (every engine's results lost). Now ODE's run is diverged,
+// naming the signal and what ODE printed, and the other four are written.
+TEST(Isolation, AnAbortInsideOdeLosesOnlyOdesRun) {
+  const fs::path dir = fresh_dir("abort");
+  const fs::path out = dir / "spin.h5";
+  const auto r = run("run --case falling_ball --engine all --quiet --jobs 2 "
+                     "--set bodies.ball.angular_velocity=1e200 --set duration=0.01 --out " +
+                     out.string());
+  ASSERT_EQ(r.exit_code, 3) << r.output;  // SPEC §5: a run failed, the file is written
+  ASSERT_TRUE(fs::exists(out)) << r.output;
+  expect_only(dir, out);
+
+  const pb::ResultsFile f = pb::read_results_file(out);
+  ASSERT_EQ(f.cases.size(), 1u);
+  EXPECT_EQ(f.cases[0].runs.size(), 5u);
+  const pb::RunResult* ode = find_run(f, "ode");
+  ASSERT_NE(ode, nullptr);
+  EXPECT_EQ(ode->status, pb::RunStatus::diverged);
+  EXPECT_TRUE(contains(ode->reason, "the ode run of case 'falling_ball' ended its process"))
+      << ode->reason;
+  EXPECT_TRUE(contains(ode->reason, "SIGABRT")) << ode->reason;
+  EXPECT_TRUE(contains(ode->reason, "dxNormalize4")) << ode->reason;  // ODE's own words
+  EXPECT_FALSE(ode->settings.empty());  // the parent still says how it was set up
+  // the closed form does not care about the spin of a frictionless disk
+  const pb::RunResult* analytic = find_run(f, "analytic");
+  ASSERT_NE(analytic, nullptr);
+  EXPECT_EQ(analytic->status, pb::RunStatus::ok) << analytic->reason;
+  EXPECT_FALSE(analytic->bodies.at(0).time_s.empty());
+  for (const char* engine : {"reference", "mujoco", "box2d"}) {
+    const pb::RunResult* e = find_run(f, engine);
+    ASSERT_NE(e, nullptr) << engine;
+    // whatever each makes of the spin, it is its own verdict, with a reason
+    if (e->status != pb::RunStatus::ok) {
+      EXPECT_FALSE(e->reason.empty()) << engine;
+      EXPECT_FALSE(contains(e->reason, "ended its process")) << engine << ": " << e->reason;
+    }
+  }
+}
+
+// The same bits whether a run is made in a process of its own or in this
+// one: the child is the same code, and its results cross through the
+// results file's own reader (the datasets are compared exactly).
+TEST(Isolation, IsolatedAndInProcessRunsAreTheSameBits) {
+  const fs::path dir = fresh_dir("bits");
+  const fs::path a = dir / "process.h5";
+  const fs::path b = dir / "none.h5";
+  const std::string common =
+      "run --case falling_ball,dual_pendulum --engine all --quiet --jobs 2 --set duration=0.8 ";
+  ASSERT_EQ(run(common + "--isolation process --out " + a.string()).exit_code, 0);
+  ASSERT_EQ(run(common + "--isolation none --out " + b.string()).exit_code, 0);
+  const pb::ResultsFile fa = pb::read_results_file(a);
+  const pb::ResultsFile fb = pb::read_results_file(b);
+  ASSERT_EQ(fa.cases.size(), fb.cases.size());
+  for (std::size_t c = 0; c < fa.cases.size(); ++c) {
+    ASSERT_EQ(fa.cases[c].runs.size(), fb.cases[c].runs.size());
+    for (std::size_t k = 0; k < fa.cases[c].runs.size(); ++k) {
+      const pb::RunResult& x = fa.cases[c].runs[k];
+      const pb::RunResult& y = fb.cases[c].runs[k];
+      SCOPED_TRACE(fa.cases[c].case_name + " x " + x.engine_name);
+      EXPECT_EQ(x.status, y.status);
+      EXPECT_EQ(x.steps, y.steps);
+      EXPECT_EQ(x.settings, y.settings);
+      EXPECT_EQ(x.mapping, y.mapping);
+      ASSERT_EQ(x.bodies.size(), y.bodies.size());
+      for (std::size_t i = 0; i < x.bodies.size(); ++i) {
+        EXPECT_EQ(x.bodies[i].time_s, y.bodies[i].time_s);
+        EXPECT_EQ(x.bodies[i].position_m, y.bodies[i].position_m);
+        EXPECT_EQ(x.bodies[i].angle_rad, y.bodies[i].angle_rad);
+        EXPECT_EQ(x.bodies[i].velocity_mps, y.bodies[i].velocity_mps);
+        EXPECT_EQ(x.bodies[i].angular_velocity_radps, y.bodies[i].angular_velocity_radps);
+      }
+      ASSERT_EQ(x.contacts.size(), y.contacts.size());
+      for (std::size_t i = 0; i < x.contacts.size(); ++i) {
+        EXPECT_EQ(x.contacts[i].time_s, y.contacts[i].time_s);
+        EXPECT_EQ(x.contacts[i].sample.force_n, y.contacts[i].sample.force_n);
+      }
+      ASSERT_EQ(x.events.size(), y.events.size());
+    }
+  }
+}
+
+// A run past --run-timeout is stopped (SIGKILL) and marked diverged naming
+// the option; the others are kept. head_on on MuJoCo at dt = 1e-7 s over
+// 1000 s is 1e10 steps (hours); its closed form takes milliseconds.
+TEST(Isolation, ARunPastItsTimeoutIsStoppedAndTheOthersKept) {
+  const fs::path dir = fresh_dir("timeout");
+  const fs::path out = dir / "slow.h5";
+  const auto r = run("run --case head_on --engine analytic,mujoco --quiet --run-timeout 1 "
+                     "--set mujoco.dt=1e-7 --set duration=1000 --set output_interval=1 --out " +
+                     out.string());
+  ASSERT_EQ(r.exit_code, 3) << r.output;
+  expect_only(dir, out);
+  const pb::ResultsFile f = pb::read_results_file(out);
+  const pb::RunResult* mj = find_run(f, "mujoco");
+  ASSERT_NE(mj, nullptr);
+  EXPECT_EQ(mj->status, pb::RunStatus::diverged);
+  EXPECT_TRUE(contains(mj->reason, "--run-timeout of 1 s")) << mj->reason;
+  const pb::RunResult* an = find_run(f, "analytic");
+  ASSERT_NE(an, nullptr);
+  EXPECT_EQ(an->status, pb::RunStatus::ok) << an->reason;
+}
+
 }  // namespace

@@ -66,5 +66,45 @@ TEST(ReportMarkdown, SectionsFiguresTablesAndMapping) {
   EXPECT_NE(md.find("| k | 1 |"), std::string::npos);
 }
 
+// A case's free text (its file's description, paper, assumptions, its name
+// from the file name, --set values) is the user's, not the report's: it must
+// reach report.md as text, never as HTML or Markdown (issue 24). The
+// expected strings are written out by hand: '<', '>' and '&' as HTML
+// entities, Markdown's punctuation with CommonMark's backslash escapes.
+TEST(ReportMarkdown, CaseFreeTextIsEscapedNotMarkup) {
+  Report r;
+  r.results_file = "r.h5";
+  CaseSection c;
+  c.name = "<img src=x onerror=alert(1)>";
+  c.description = "# not a heading <script>alert(1)</script> [link](http://e.example) *x*";
+  c.paper = "![img](http://e.example/i.png)";
+  c.assumptions = {"<b>bold</b> & `code` _under_ a_b", "- not a sub-item"};
+  c.overrides = {{"duration", "1`<i>x</i>`"}};
+  r.cases.push_back(c);
+  Table t;
+  t.title = "Timings";
+  t.columns = {"case"};
+  t.rows = {{"<script>x</script>"}};
+  t.row_status = {""};
+  r.tables.push_back(t);
+  const std::string md = report_markdown(r);
+  // (the override is in a code span, where nothing is markup)
+  for (const char* raw : {"<script>", "<img", "<b>", "[link](", "![img](", "\n# not", "\n- not"}) {
+    EXPECT_EQ(md.find(raw), std::string::npos) << raw << " reached report.md as markup:\n" << md;
+  }
+  EXPECT_NE(md.find("## &lt;img src=x onerror=alert(1)&gt;\n"), std::string::npos) << md;
+  EXPECT_NE(md.find("\\# not a heading &lt;script&gt;alert(1)&lt;/script&gt; \\[link\\](http://e.example) \\*x\\*"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("Paper: !\\[img\\](http://e.example/i.png)"), std::string::npos) << md;
+  // an underscore inside a word is no emphasis and stays as it is (falling_ball)
+  EXPECT_NE(md.find("- &lt;b&gt;bold&lt;/b&gt; &amp; \\`code\\` \\_under\\_ a_b\n"), std::string::npos) << md;
+  EXPECT_NE(md.find("- \\- not a sub-item\n"), std::string::npos) << md;
+  // a code span holding a backtick is fenced with two, and padded with a
+  // space on both sides as it ends with one (CommonMark strips the pair)
+  EXPECT_NE(md.find("`` duration=1`<i>x</i>` ``"), std::string::npos) << md;
+  EXPECT_NE(md.find("| &lt;script&gt;x&lt;/script&gt; |"), std::string::npos) << md;
+}
+
 }  // namespace
 }  // namespace pb::internal

@@ -54,7 +54,8 @@ TEST(Thresholds, VerdictsOfPlainAndKnownBreaches) {
       {value("mujoco", 0.805, 0.8),     // inside: pass
        value("ode", 0.81, 0.8),         // 0.01 > 0.008: fail
        value("box2d", 0.70, 0.8),       // outside, as declared: known breach
-       value("reference", 0.8, 0.8)});  // inside, declared not to be: unexpected pass
+       value("reference", 0.8, 0.8)},   // inside, declared not to be: unexpected pass
+      {});
   ASSERT_EQ(out.size(), 4u);
   EXPECT_STREQ(outcome_label(out[0]), "pass");
   EXPECT_FALSE(fails_gate(out[0]));
@@ -70,7 +71,7 @@ TEST(Thresholds, VerdictsOfPlainAndKnownBreaches) {
 
 TEST(Thresholds, MissingMetricFailsEvenAsAKnownBreach) {
   const auto out = check_thresholds({band("box2d", 0.01, "impulsive restitution")},
-                                    {value("mujoco", 0.8, 0.8)});
+                                    {value("mujoco", 0.8, 0.8)}, {});
   ASSERT_EQ(out.size(), 1u);
   EXPECT_TRUE(fails_gate(out[0]));
   EXPECT_STREQ(outcome_label(out[0]), "fail");
@@ -80,7 +81,7 @@ TEST(Thresholds, MissingMetricFailsEvenAsAKnownBreach) {
 TEST(Thresholds, NanIsABreachNotAKnownOne) {
   const auto out =
       check_thresholds({band("mujoco", 0.01)},
-                       {value("mujoco", std::numeric_limits<double>::quiet_NaN(), 0.8)});
+                       {value("mujoco", std::numeric_limits<double>::quiet_NaN(), 0.8)}, {});
   ASSERT_EQ(out.size(), 1u);
   EXPECT_TRUE(fails_gate(out[0]));
 }
@@ -88,8 +89,8 @@ TEST(Thresholds, NanIsABreachNotAKnownOne) {
 TEST(Thresholds, JunitSkipsKnownBreachesAndFailsTheRest) {
   const auto out = check_thresholds(
       {band("ode", 0.01), band("box2d", 0.01, "impulsive restitution")},
-      {value("ode", 0.81, 0.8), value("box2d", 0.70, 0.8)});
-  const std::string x = junit_xml(out, {});
+      {value("ode", 0.81, 0.8), value("box2d", 0.70, 0.8)}, {});
+  const std::string x = junit_xml(out, {}, {});
   EXPECT_NE(x.find("tests=\"2\" failures=\"1\""), std::string::npos) << x;
   EXPECT_NE(x.find("<skipped message="), std::string::npos);
   EXPECT_NE(x.find("<property name=\"outcome\" value=\"known breach\"/>"), std::string::npos);

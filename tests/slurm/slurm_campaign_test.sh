@@ -73,7 +73,7 @@ set -e
 echo "$out" | head -5
 [[ $rc -ne 0 ]] || fail "shard 0 was killed after it had finished: nothing was tested (make the campaign longer)"
 grep -q "runs are missing" <<<"$out" || fail "merge did not say which runs are missing"
-grep -q "^  run [0-9]*: " <<<"$out" || fail "merge did not name the missing runs"
+grep -q "runs are missing: .*run [0-9]*: " <<<"$out" || fail "merge did not name the missing runs"
 [[ ! -e "$work/killed.h5" ]] || fail "a failed merge left a file"
 # resubmitted, shard 0 runs only what it had not finished
 sbatch --parsable --wait --array=0 --cpus-per-task=1 --output="$work/killed/slurm-logs/resubmit-%a.out" \

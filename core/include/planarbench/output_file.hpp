@@ -68,4 +68,8 @@ std::filesystem::path write_text_atomically(const std::string& option,
                                             const std::filesystem::path& path,
                                             const std::string& text);
 
+// `digits` is the decimal pid of no live process on this host, other than
+// this one (a killed writer's temporary or folder may go)
+[[nodiscard]] bool names_dead_process(const std::string& digits);
+
 }  // namespace pb

@@ -28,6 +28,11 @@ class ResultsFileWriter {
   ResultsFileWriter(const ResultsFileWriter&) = delete;
   ResultsFileWriter& operator=(const ResultsFileWriter&) = delete;
   void write_run(std::size_t case_index, std::size_t run_index, const RunResult& r);
+  // the same, the run taken whole from `source`, a file this writer's kind
+  // wrote with that case and engine (a child process's run, run_isolation):
+  // its group's datasets are copied chunk by chunk as stored (H5Ocopy; no
+  // sample is held in memory) and its attributes one by one
+  void copy_run(std::size_t case_index, std::size_t run_index, const std::filesystem::path& source);
   void commit();
 
  private:
@@ -46,5 +51,9 @@ void write_results_file(const std::filesystem::path& path, const ResultsFile& re
 // Reads a results file written by write_results_file. Throws InputError naming
 // the file and the missing or malformed object for a truncated or foreign file.
 [[nodiscard]] ResultsFile read_results_file(const std::filesystem::path& path);
+
+// The one run of a file that holds one (a child process's): its attributes
+// (status, reason, steps, times, settings, mapping), without its samples.
+[[nodiscard]] RunResult read_run_header(const std::filesystem::path& path);
 
 }  // namespace pb

@@ -17,6 +17,21 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 // runaway guard: no case needs anywhere near this many steps
 constexpr long kMaxSteps = 200'000'000;
+// The progress guard (issue 24): every kProgressWindow steps, the time they
+// advanced is projected over what is left of the run; a run that would need
+// more than kHopeless steps at that rate cannot end within kMaxSteps, even if
+// it sped up 100-fold, and ends `diverged` now instead of spinning for minutes
+// (a speed of 1e308 m/s or a spin of 1e20 rad/s: steps of ~1e-300 s). A run
+// that ends normally takes at most ~1e5 steps in all (block_hold, the longest
+// shipped: 6966); its one window would have to average h < 1.25e-10 s over
+// 1e5 steps on a 2.5 s case to be stopped.
+constexpr long kProgressWindow = 100'000;
+constexpr double kHopeless = 100.0 * static_cast<double>(kMaxSteps);
+// ... and a run whose accepted steps leave t unchanged (h below half an ulp of
+// t: a speed of 1e200 m/s at t = 0 gives steps of ~1e-300 s, each costing up
+// to one event location, ~7 ms) ends after this many in a row, at once: no
+// run that ends can have one such step, t + h == t repeats forever
+constexpr int kMaxStalledSteps = 100;
 // golden-section iterations for a peak: the bracket shrinks by 0.618^40 = 4e-9
 constexpr int kGoldenIterations = 40;
 // refine only local maxima within 2 % of the episode's running peak
@@ -342,7 +357,15 @@ void ReferenceSolver::accept(double h, std::optional<double> exact_end) {
   seg_newest_ = 1 - seg_newest_;
   seg_count_ = std::min(seg_count_ + 1, 2);
 
+  const double t_before = t_;
   t_ = exact_end ? *exact_end : t_ + h;
+  stalled_steps_ = t_ > t_before ? 0 : stalled_steps_ + 1;
+  if (stalled_steps_ > kMaxStalledSteps) {
+    throw EngineError(fmt::format(
+        "reference: no progress: {} steps in a row left t = {:.15g} s where it was (step size "
+        "{:.3g} s, below half an ulp of t)",
+        kMaxStalledSteps, t_, h));
+  }
   y_ = y1_;
   f_ = f1_;
   pairs_ = pairs1_;
@@ -352,6 +375,19 @@ void ReferenceSolver::accept(double h, std::optional<double> exact_end) {
   }
   if (stats_.steps > kMaxSteps) {
     throw EngineError(fmt::format("reference: more than {} steps by t = {:.15g} s", kMaxSteps, t_));
+  }
+  if (stats_.steps % kProgressWindow == 0) {
+    const double advanced = t_ - window_t_;
+    const double left = std::max(duration_s_ - t_, 0.0);
+    const double needed = left / advanced * static_cast<double>(kProgressWindow);
+    if (!(advanced > 0.0) || needed > kHopeless) {
+      throw EngineError(fmt::format(
+          "reference: no progress: the last {} steps advanced t by {:.3g} s (to t = {:.6g} s); "
+          "the {:.6g} s left would take {:.3g} steps at that rate, beyond {:.0e} (the step "
+          "limit x 100)",
+          kProgressWindow, advanced, t_, left, needed, kHopeless));
+    }
+    window_t_ = t_;
   }
   if (const std::string why = sys_.beyond_geometry(y_); !why.empty()) {
     throw EngineError(fmt::format("reference: {} at t = {:.15g} s", why, t_));

@@ -14,6 +14,7 @@
 #include "hdf5_attributes.hpp"
 #include "hdf5_chunks.hpp"
 #include "hdf5_handle.hpp"
+#include "results_validation.hpp"
 
 namespace pb::internal {
 
@@ -156,10 +157,12 @@ inline Hid open_dataset(hid_t loc, const char* name) {
   return owned_dataset(H5Dopen2(loc, name, H5P_DEFAULT), object, "cannot open the dataset");
 }
 
-// reads [n] (cols == 0) or [n, cols] doubles, row-major
+// reads [n] (cols == 0) or [n, cols] doubles, row-major; the dataset must
+// be float64 and store its rows (results_validation.hpp) before any is allocated
 inline std::vector<double> read_double_dataset(hid_t loc, const char* name, hsize_t cols) {
   Hid d = open_dataset(loc, name);
   const std::string object = object_path(d.get());
+  check_float64(d.get(), object);
   Hid space = owned_space(H5Dget_space(d.get()), object, "cannot read the dataset's space");
   const int rank = H5Sget_simple_extent_ndims(space.get());
   hsize_t dims[2] = {0, 0};
@@ -170,7 +173,8 @@ inline std::vector<double> read_double_dataset(hid_t loc, const char* name, hsiz
     throw Hdf5Error(object, cols == 0 ? "expected shape [n]"
                                       : "expected shape [n, " + std::to_string(cols) + "]");
   }
-  std::vector<double> out(dims[0] * (cols == 0 ? 1 : cols));
+  check_rows_stored(d.get(), object);
+  auto out = allocate_rows<double>(dims[0] * (cols == 0 ? 1 : cols), object);
   if (!out.empty()) {
     check(H5Dread(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), object,
           "cannot read the dataset");
@@ -258,7 +262,8 @@ inline void write_table(hid_t loc, const char* name, const TableLayout& layout, 
   d.close(object);
 }
 
-// reads a table into records laid out as `layout`; every field must be present
+// reads a table into records laid out as `layout`; every field must be
+// present with its type, and the rows stored, before any is allocated
 template <typename Record>
 std::vector<Record> read_table(hid_t loc, const char* name, const TableLayout& layout) {
   Hid d = open_dataset(loc, name);
@@ -267,12 +272,7 @@ std::vector<Record> read_table(hid_t loc, const char* name, const TableLayout& l
   if (H5Tget_class(file_type.get()) != H5T_COMPOUND) {
     throw Hdf5Error(object, "is not a table (compound dataset)");
   }
-  for (const auto& f : layout.fields) {
-    if (H5Tget_member_index(file_type.get(), f.name) < 0) {
-      hdf5_last_error();
-      throw Hdf5Error(object, std::string("field '") + f.name + "' is missing");
-    }
-  }
+  check_table_fields(file_type.get(), layout, object);
   Hid space = owned_space(H5Dget_space(d.get()), object, "cannot read the dataset's space");
   hsize_t n = 0;
   if (H5Sget_simple_extent_ndims(space.get()) != 1 ||
@@ -280,7 +280,8 @@ std::vector<Record> read_table(hid_t loc, const char* name, const TableLayout& l
     hdf5_last_error();
     throw Hdf5Error(object, "expected shape [n]");
   }
-  std::vector<Record> out(n);
+  check_rows_stored(d.get(), object);
+  auto out = allocate_rows<Record>(n, object);
   if (n > 0) {
     Hid mem_type = table_type(layout, false, object);
     check(H5Dread(d.get(), mem_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), object,
@@ -335,7 +336,8 @@ inline std::vector<std::string> read_string_dataset(hid_t loc, const char* name)
     throw Hdf5Error(object, "is not a variable-length string dataset");
   }
   const hsize_t n = dataset_length(d.get(), object);
-  std::vector<char*> ptrs(n, nullptr);
+  check_rows_stored(d.get(), object);
+  auto ptrs = allocate_rows<char*>(n, object);
   std::vector<std::string> out;
   if (n == 0) return out;
   Hid mem = vlen_utf8_type(object);
@@ -353,7 +355,10 @@ inline std::vector<std::string> read_string_dataset(hid_t loc, const char* name)
 inline std::vector<std::int64_t> read_int64_dataset(hid_t loc, const char* name) {
   Hid d = open_dataset(loc, name);
   const std::string object = object_path(d.get());
-  std::vector<std::int64_t> out(dataset_length(d.get(), object));
+  check_int64(d.get(), object);
+  const hsize_t n = dataset_length(d.get(), object);
+  check_rows_stored(d.get(), object);
+  auto out = allocate_rows<std::int64_t>(n, object);
   if (!out.empty()) {
     check(H5Dread(d.get(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), object,
           "cannot read the dataset");

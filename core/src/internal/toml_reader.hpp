@@ -56,15 +56,32 @@ struct Range {
   }
 };
 
-// a value as quoted in messages: -1, 0.5, "abc", true, an array, a table
+// a value as quoted in messages: -1, 0.5, "abc", true, an array, a table; a
+// string printable and cut to kEchoChars characters ("1111...", 200 characters)
 inline std::string describe_value(const toml::node& n) {
   if (const auto* v = n.as_integer()) return fmt::format("{}", v->get());
   if (const auto* v = n.as_floating_point()) return fmt::format("{}", v->get());
   if (const auto* v = n.as_boolean()) return v->get() ? "true" : "false";
-  if (const auto* v = n.as_string()) return fmt::format("\"{}\"", v->get());
+  if (const auto* v = n.as_string()) return echo_value(v->get(), '"');
   if (const auto* v = n.as_array()) return fmt::format("an array of {}", v->size());
   if (n.is_table()) return "a table";
   return "a date/time";
+}
+
+// a value of the wrong type, as written and with its type, so that it does not
+// look allowed: 100000.0, a float (not "100000", which an integer field takes);
+// "abc", a string; true, a boolean; an array of 2; a table
+inline std::string describe_typed(const toml::node& n) {
+  if (const auto* v = n.as_floating_point()) {
+    std::string text = fmt::format("{}", v->get());
+    // a float with an integral value prints as one ("100000"): keep its point
+    if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
+    return text + ", a float";
+  }
+  if (n.is_integer()) return describe_value(n) + ", an integer";
+  if (n.is_string()) return describe_value(n) + ", a string";
+  if (n.is_boolean()) return describe_value(n) + ", a boolean";
+  return describe_value(n);
 }
 
 // Where the nodes of a case tree come from: the file (toml++ source regions
@@ -185,7 +202,11 @@ class TableReader {
     const toml::node* n = find(key);
     if (n == nullptr) return fallback;
     const auto* i = n->as_integer();
-    if (i == nullptr || i->get() < lo || i->get() > hi) {
+    if (i == nullptr) {
+      origins_->fail(n, field(key),
+                     fmt::format("must be an integer in [{}, {}] (got {})", lo, hi, describe_typed(*n)));
+    }
+    if (i->get() < lo || i->get() > hi) {
       origins_->fail(n, field(key), must_be(fmt::format("an integer in [{}, {}]", lo, hi), *n));
     }
     return static_cast<int>(i->get());

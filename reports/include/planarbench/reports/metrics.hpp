@@ -42,6 +42,8 @@ struct MetricValue {
 // baseline's sample times inside the run's time span; samples of the baseline
 // after `valid_until_s` are left out. Episodes are matched in order per body
 // pair; a missing or extra episode is reported as metric "episode_count".
+// A NaN sample makes a maximum (position_max, velocity_max, angle_max, the
+// drifts) NaN, never skipped (issue 24; run_validity.hpp names such runs).
 [[nodiscard]] std::vector<MetricValue> compare_runs(const Case& c, const RunResult& run,
                                                     const RunResult& baseline,
                                                     const std::string& against,

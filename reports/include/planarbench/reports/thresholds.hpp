@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "planarbench/reports/metrics.hpp"
+#include "planarbench/reports/run_validity.hpp"
 
 namespace pb {
 
@@ -41,24 +42,36 @@ struct CheckOutcome {
   double limit = 0.0;    // atol + rtol |desired|
   bool passed = false;   // the band holds
   std::string message;   // why it failed
+  // non-empty: the run or its baseline holds NaN or inf (run_validity.hpp),
+  // what and where; the check fails whatever its value
+  std::string invalid_data;
 };
 
 // whether an outcome fails the gate: a breach that is not a known one, a
-// known breach that passed, or a metric that was not computed
+// known breach that passed, a metric that was not computed, or a run or
+// baseline with invalid data
 [[nodiscard]] bool fails_gate(const CheckOutcome& o);
-// "pass", "fail", "known breach" or "unexpected pass"
+// "pass", "fail", "known breach", "unexpected pass" or "invalid data"
 [[nodiscard]] const char* outcome_label(const CheckOutcome& o);
 
 // Every threshold against the metrics; a threshold that matches no metric
-// fails ("not computed": a gate never passes silently).
+// fails ("not computed": a gate never passes silently). A threshold of a run
+// in `invalid` (invalid_runs of its case), or against one (its baseline:
+// "truth" is the analytic run, "self" the run itself, else the engine named),
+// fails with the invalid data named, whatever its value.
 [[nodiscard]] std::vector<CheckOutcome> check_thresholds(const std::vector<Threshold>& thresholds,
-                                                         const std::vector<MetricValue>& metrics);
+                                                         const std::vector<MetricValue>& metrics,
+                                                         const std::vector<InvalidRun>& invalid);
 
-// JUnit XML: one test case per checked metric, value and limit as properties.
+// JUnit XML: one test case per checked metric, value and limit as properties;
+// one failed test case per diverged run and per dataset of invalid data
+// (classname CASE.ENGINE, name "data").
 [[nodiscard]] std::string junit_xml(const std::vector<CheckOutcome>& outcomes,
-                                    const std::vector<std::string>& diverged_runs);
+                                    const std::vector<std::string>& diverged_runs,
+                                    const std::vector<InvalidRun>& invalid);
 // A Markdown summary small enough for a CI job summary.
 [[nodiscard]] std::string markdown_summary(const std::vector<CheckOutcome>& outcomes,
-                                           const std::vector<std::string>& diverged_runs);
+                                           const std::vector<std::string>& diverged_runs,
+                                           const std::vector<InvalidRun>& invalid);
 
 }  // namespace pb

@@ -157,6 +157,9 @@ class ReferenceSolver {
   double h_next_ = 0.0;
   long grid_next_ = 1;
   int zero_length_events_ = 0;
+  // the progress guard: simulated time at the start of the current window
+  double window_t_ = 0.0;
+  int stalled_steps_ = 0;  // consecutive accepted steps that left t where it was
   std::vector<Candidate> candidates_;
   // the two newest accepted steps
   std::array<Segment, 2> seg_;

@@ -1,0 +1,98 @@
+#include "planarbench/reports/run_validity.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <functional>
+
+namespace pb {
+
+namespace {
+
+// the non-finite rows of a dataset of n rows, value(i) giving row i's first
+// non-finite value (or a finite one when there is none)
+void scan(const std::string& case_name, const RunResult& r, const std::string& dataset,
+          const std::string& field, std::size_t n, const std::function<double(std::size_t)>& value,
+          std::vector<InvalidRun>& out) {
+  InvalidRun bad;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double v = value(i);
+    if (std::isfinite(v)) continue;
+    if (bad.rows == 0) {
+      bad.first_row = i;
+      bad.first_value = v;
+    }
+    ++bad.rows;
+  }
+  if (bad.rows == 0) return;
+  bad.case_name = case_name;
+  bad.engine = r.engine_name;
+  bad.dataset = dataset;
+  bad.field = field;
+  bad.total_rows = n;
+  out.push_back(std::move(bad));
+}
+
+// the first non-finite coordinate of v, or v's x
+double first_bad(const Vec2& v) {
+  return std::isfinite(v.x()) ? v.y() : v.x();
+}
+
+}  // namespace
+
+std::string InvalidRun::run() const {
+  return case_name + "." + engine;
+}
+
+std::string InvalidRun::what() const {
+  return fmt::format("{}{}: {} of {} rows hold NaN or inf (the first: row {}, {})", dataset,
+                     field.empty() ? "" : ", field " + field, rows, total_rows, first_row,
+                     first_value);
+}
+
+std::string InvalidRun::describe() const {
+  return run() + ": " + what();
+}
+
+std::vector<InvalidRun> invalid_runs(const CaseRuns& cr) {
+  std::vector<InvalidRun> out;
+  for (const auto& r : cr.runs) {
+    if (r.status == RunStatus::unsupported) continue;
+    const std::string run = "/runs/" + cr.case_name + "/" + r.engine_name;
+    for (const auto& b : r.bodies) {
+      const std::string body = run + "/bodies/" + b.name + "/";
+      scan(
+          cr.case_name, r, body + "time", "", b.time_s.size(),
+          [&](std::size_t i) { return b.time_s[i]; }, out);
+      scan(
+          cr.case_name, r, body + "position", "", b.position_m.size(),
+          [&](std::size_t i) { return first_bad(b.position_m[i]); }, out);
+      scan(
+          cr.case_name, r, body + "angle", "", b.angle_rad.size(),
+          [&](std::size_t i) { return b.angle_rad[i]; }, out);
+      scan(
+          cr.case_name, r, body + "velocity", "", b.velocity_mps.size(),
+          [&](std::size_t i) { return first_bad(b.velocity_mps[i]); }, out);
+      scan(
+          cr.case_name, r, body + "angular_velocity", "", b.angular_velocity_radps.size(),
+          [&](std::size_t i) { return b.angular_velocity_radps[i]; }, out);
+    }
+    scan(
+        cr.case_name, r, run + "/contacts", "time", r.contacts.size(),
+        [&](std::size_t i) { return r.contacts[i].time_s; }, out);
+    scan(
+        cr.case_name, r, run + "/contacts", "force_n", r.contacts.size(),
+        [&](std::size_t i) { return r.contacts[i].sample.force_n; }, out);
+  }
+  return out;
+}
+
+const InvalidRun* find_invalid(const std::vector<InvalidRun>& invalid, const std::string& case_name,
+                               const std::string& engine) {
+  for (const auto& f : invalid) {
+    if (f.case_name == case_name && f.engine == engine) return &f;
+  }
+  return nullptr;
+}
+
+}  // namespace pb
