@@ -25,6 +25,7 @@
 #include "planarbench/reports/friction_metrics.hpp"
 #include "planarbench/results_file.hpp"
 #include "planarbench/runner.hpp"
+#include "run_isolation.hpp"
 #include "sweep_error.hpp"
 #include "sweep_plan.hpp"
 #include "truth_run.hpp"
@@ -48,6 +49,8 @@ struct CampaignOptionsCli {
   double checkpoint_s = 60.0;
   bool quiet = false;
   std::string cases_dir;
+  std::string isolation = "process";
+  double run_timeout_s = kDefaultRunTimeout_s;
 };
 
 std::string part_prefix(const CampaignPlan& plan, int k, int n) {
@@ -227,6 +230,7 @@ std::string physics_json(const nlohmann::json& mapping) {
 
 int run_campaign(const CampaignOptionsCli& opt, int argc, char** argv) {
   check_jobs(opt.jobs);
+  check_run_timeout(opt.run_timeout_s);
   // plain variables, not a structured binding: lambdas below capture them
   // (Clang 14 cannot capture a binding)
   const std::pair<int, int> shard = parse_shard(opt.shard, "--shard");
@@ -294,6 +298,7 @@ int run_campaign(const CampaignOptionsCli& opt, int argc, char** argv) {
   }
 
   // ---- the runs ----
+  if (opt.isolation == "process") remove_stale_child_folders(dir, dir / "campaign");
   std::vector<std::string> set_assignments;
   for (const auto& [key, v] : plan.set) set_assignments.push_back(key + "=" + v);
   const Overrides fixed = parse_overrides(set_assignments);
@@ -369,8 +374,24 @@ int run_campaign(const CampaignOptionsCli& opt, int argc, char** argv) {
     for (const auto& [key, v] : own) all.push_back(key + "=" + v);
     const Overrides o = parse_overrides(all);
     const Case c = load_case(cp.path, o.case_keys);
-    auto engine = make_engine(engine_name);
-    const RunResult r = run_engine(*engine, c, engine_settings_for(c, o.engine_keys));
+    const SettingsOverrides engine_settings = engine_settings_for(c, o.engine_keys);
+    RunResult r;
+    if (opt.isolation == "process") {
+      // a process of its own (run_isolation.hpp): a library's abort ends this run only
+      IsolatedRun spec;
+      spec.case_path = fs::absolute(cp.path);
+      spec.case_name = c.name;
+      spec.engine = engine_name;
+      spec.set = all;
+      spec.duration_s = c.duration_s;
+      spec.timeout_s = opt.run_timeout_s;
+      spec.work_dir = dir;
+      spec.target = dir / "campaign";
+      r = run_isolated_whole(spec, c, engine_settings);
+    } else {
+      auto engine = make_engine(engine_name);
+      r = run_engine(*engine, c, engine_settings);
+    }
     std::shared_ptr<const RunResult> truth;
     if (plan.needs_truth() && r.status == RunStatus::ok) {
       truth = truth_for_run(cp, c, plan.case_assignments(ref));
@@ -591,6 +612,7 @@ Action add_campaign_command(CLI::App& app, int argc, char** argv) {
                   "... or after this many seconds, whichever comes first")
       ->default_val(60.0);
   run->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
+  add_isolation_options(*run, opt->isolation, opt->run_timeout_s);
   run->add_option("--cases-dir", opt->cases_dir,
                   "Folder of case names (default: $PLANARBENCH_CASES_DIR or the source tree's cases/)");
 

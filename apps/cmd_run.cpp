@@ -39,27 +39,6 @@ struct RunOptionsCli {
   int progress_fd = -1;  // a child's: write the fraction done there
 };
 
-// a run whose process ended without its results: what the parent knows of it
-// (the engine's version and settings, the case's bodies), as an unsupported
-// run has them
-void describe_lost_run(RunResult& r, const Case& c, const SettingsOverrides& settings) {
-  auto engine = make_engine(r.engine_name);
-  engine->settings().apply(settings);
-  r.engine_version = engine->version();
-  r.settings = engine->settings().to_json();
-  r.mapping = {{"physics", physics_json(engine->physics())}};
-  r.body_names.clear();
-  for (const auto& b : c.bodies) r.body_names.push_back(b.name);
-}
-
-// --run-timeout: 0 (none) or a finite number of seconds, at most 30 days
-void check_run_timeout(double s) {
-  if (!std::isfinite(s) || s < 0.0 || s > 30.0 * 86400.0) {
-    throw InputError("--run-timeout", 0, "",
-                     fmt::format("must be 0 (no limit) or seconds in (0, 2592000] (got {})", s));
-  }
-}
-
 // a child's progress, one fraction per line on the descriptor its parent gave
 void write_progress(int fd, double f) {
   const std::string line = fmt::format("{:.6f}\n", f);
@@ -296,17 +275,7 @@ Action add_run_command(CLI::App& app, int argc, char** argv) {
                   "wall time the median of all (each is kept in wall_time_repeats_s)")
       ->default_val(1);
   cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
-  cmd->add_option("--isolation", opt->isolation,
-                  "process: each run in a process of its own, so that an engine library's abort, "
-                  "assertion, crash or allocation failure, or a run past --run-timeout, ends that "
-                  "run only (marked diverged with what ended it); none: every run in this process "
-                  "(profilers, debuggers; one library's abort then ends the command)")
-      ->check(CLI::IsMember({"process", "none"}))
-      ->default_val("process");
-  cmd->add_option("--run-timeout", opt->run_timeout_s,
-                  "Wall-clock seconds one run (with its repeats) may take before it is stopped "
-                  "and marked diverged; 0: no limit (with --isolation process only)")
-      ->default_val(3600.0);
+  add_isolation_options(*cmd, opt->isolation, opt->run_timeout_s);
   cmd->add_option("--progress-fd", opt->progress_fd,
                   "(internal) file descriptor a child run writes its fraction done to")
       ->group("");

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "cli_common.hpp"
+#include "run_isolation.hpp"
 #include "commands.hpp"
 #include "planarbench/case_loader.hpp"
 #include "planarbench/engines.hpp"
@@ -42,10 +43,13 @@ struct SweepOptionsCli {
   bool quick = false;
   bool quiet = false;
   std::string cases_dir;
+  std::string isolation = "process";
+  double run_timeout_s = kDefaultRunTimeout_s;
 };
 
 // one case of the sweep, everything loaded and planned before anything runs
 struct CasePlan {
+  fs::path path;
   Case c;
   SettingsOverrides base;  // the case's [settings] under the --set engine keys
   TruthPlan truth;
@@ -107,6 +111,7 @@ int run_sweep(const SweepOptionsCli& opt, int argc, char** argv) {
   // ---- options, then every case and rung validated before anything runs ----
   check_jobs(opt.jobs);
   check_repeat(opt.repeat);
+  check_run_timeout(opt.run_timeout_s);
   std::vector<double> dts =
       opt.dt_ladder.empty() ? default_dt_ladder() : parse_ladder(opt.dt_ladder, "--dt-ladder");
   std::vector<double> rtols = default_rtol_ladder();
@@ -116,6 +121,8 @@ int run_sweep(const SweepOptionsCli& opt, int argc, char** argv) {
   }
   // the --out target must be writable before minutes are spent computing it
   check_output_file("--out", opt.out);
+  const fs::path out_dir = fs::path(opt.out).parent_path().empty() ? fs::path(".")
+                                                                    : fs::path(opt.out).parent_path();
   const Overrides overrides = parse_overrides(opt.set);
   reject_swept_keys(overrides.engine_keys);
   const auto engines = sweep_engines(opt.engine_spec);
@@ -126,6 +133,7 @@ int run_sweep(const SweepOptionsCli& opt, int argc, char** argv) {
   std::vector<CasePlan> plans;
   for (const auto& path : paths) {
     CasePlan p;
+    p.path = path;
     p.c = load_case(path, overrides.case_keys);
     p.base = engine_settings_for(p.c, overrides.engine_keys);
     p.truth = truth_for(p.c);
@@ -184,6 +192,7 @@ int run_sweep(const SweepOptionsCli& opt, int argc, char** argv) {
       plan.push_back(SchedulerTask{cost, exclusive_group(s.engine)});
     }
   }
+  if (opt.isolation == "process") remove_stale_child_folders(out_dir, opt.out);
   std::vector<SweepRung> rungs(tasks.size());
   std::vector<bool> ran(tasks.size(), false);
   Progress progress(opt.quiet, tasks.size());
@@ -204,8 +213,24 @@ int run_sweep(const SweepOptionsCli& opt, int argc, char** argv) {
       std::vector<double> walls;
       RunResult first;
       for (int k = 0; k < opt.repeat; ++k) {
-        auto engine = make_engine(s.engine);
-        RunResult r = run_engine(*engine, p.c, settings);
+        RunResult r;
+        if (opt.isolation == "process") {
+          // a process of its own (run_isolation.hpp): a library's abort ends this rung only
+          IsolatedRun spec;
+          spec.case_path = fs::absolute(p.path);
+          spec.case_name = p.c.name;
+          spec.engine = s.engine;
+          spec.set = opt.set;
+          for (const auto& [key, v] : rung_assignments(s, value)) spec.set.push_back(key + "=" + v);
+          spec.duration_s = p.c.duration_s;
+          spec.timeout_s = opt.run_timeout_s;
+          spec.work_dir = out_dir;
+          spec.target = opt.out;
+          r = run_isolated_whole(spec, p.c, settings);
+        } else {
+          auto engine = make_engine(s.engine);
+          r = run_engine(*engine, p.c, settings);
+        }
         walls.push_back(r.wall_time_s);
         if (k == 0) first = std::move(r);
       }
@@ -321,6 +346,7 @@ Action add_sweep_command(CLI::App& app, int argc, char** argv) {
                 "Two rungs per series (dt 1e-3 and 1e-4 s, or the two largest of --dt-ladder; "
                 "rtol 1e-4 and 1e-6), for CI");
   cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
+  add_isolation_options(*cmd, opt->isolation, opt->run_timeout_s);
   cmd->add_option(
       "--cases-dir", opt->cases_dir,
       "Folder of case files (default: $PLANARBENCH_CASES_DIR or the source tree's cases/)");

@@ -8,13 +8,16 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <atomic>
+#include <cmath>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <fmt/format.h>
 #include <stdexcept>
 
+#include "planarbench/engines.hpp"
 #include "planarbench/errors.hpp"
 #include "planarbench/output_file.hpp"
 #include "planarbench/results_file.hpp"
@@ -276,6 +279,48 @@ void remove_stale_child_folders(const fs::path& work_dir, const fs::path& target
     if (!names_dead_process(rest.substr(0, rest.find('.')))) continue;
     std::error_code ignored;
     fs::remove_all(it->path(), ignored);
+  }
+}
+
+RunResult run_isolated_whole(const IsolatedRun& spec, const Case& c,
+                             const SettingsOverrides& engine_settings) {
+  IsolatedResult got = run_isolated(spec, nullptr);
+  if (got.file.empty()) {
+    describe_lost_run(got.run, c, engine_settings);
+    return std::move(got.run);
+  }
+  ResultsFile f = read_results_file(got.file);
+  return std::move(f.cases.at(0).runs.at(0));
+}
+
+void describe_lost_run(RunResult& r, const Case& c, const SettingsOverrides& engine_settings) {
+  auto engine = make_engine(r.engine_name);
+  engine->settings().apply(engine_settings);
+  r.engine_version = engine->version();
+  r.settings = engine->settings().to_json();
+  r.mapping = {{"physics", physics_json(engine->physics())}};
+  r.body_names.clear();
+  for (const auto& b : c.bodies) r.body_names.push_back(b.name);
+}
+
+void add_isolation_options(CLI::App& cmd, std::string& isolation, double& run_timeout_s) {
+  cmd.add_option("--isolation", isolation,
+                 "process: each run in a process of its own, so that an engine library's abort, "
+                 "assertion, crash or allocation failure, or a run past --run-timeout, ends that "
+                 "run only (marked diverged with what ended it); none: every run in this process "
+                 "(profilers, debuggers; one library's abort then ends the command)")
+      ->check(CLI::IsMember({"process", "none"}))
+      ->default_val("process");
+  cmd.add_option("--run-timeout", run_timeout_s,
+                 "Wall-clock seconds one run (with its repeats) may take before it is stopped "
+                 "and marked diverged; 0: no limit (with --isolation process only)")
+      ->default_val(kDefaultRunTimeout_s);
+}
+
+void check_run_timeout(double s) {
+  if (!std::isfinite(s) || s < 0.0 || s > 30.0 * 86400.0) {
+    throw InputError("--run-timeout", 0, "",
+                     fmt::format("must be 0 (no limit) or seconds in (0, 2592000] (got {})", s));
   }
 }
 

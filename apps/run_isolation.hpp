@@ -17,7 +17,13 @@
 #include <string>
 #include <vector>
 
+#include "planarbench/case.hpp"
 #include "planarbench/run_result.hpp"
+#include "planarbench/settings.hpp"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace pb::cli {
 
@@ -51,6 +57,23 @@ struct IsolatedResult {
 // InputError the child reports (exit 2) is thrown as one.
 [[nodiscard]] IsolatedResult run_isolated(const IsolatedRun& spec,
                                           const std::function<void(double)>& progress);
+
+// The same, the run read whole into memory (campaigns, whose runs are
+// reduced to metrics in memory anyway); a lost run is completed by
+// describe_lost_run.
+[[nodiscard]] RunResult run_isolated_whole(const IsolatedRun& spec, const Case& c,
+                                           const SettingsOverrides& engine_settings);
+
+// a run whose process ended without its results: what the parent knows of it
+// (the engine's version and settings, the case's bodies), as an unsupported
+// run has them
+void describe_lost_run(RunResult& r, const Case& c, const SettingsOverrides& engine_settings);
+
+// --isolation process|none and --run-timeout SECONDS on a command that runs
+// engines; check_run_timeout validates the latter (0, none, or (0, 30 days])
+inline constexpr double kDefaultRunTimeout_s = 3600.0;
+void add_isolation_options(CLI::App& cmd, std::string& isolation, double& run_timeout_s);
+void check_run_timeout(double seconds);
 
 // A parent killed with SIGKILL leaves its children's folders
 // (`.<target>.run.<pid>.<n>` beside the target, as a killed writer leaves its

@@ -126,11 +126,16 @@ std::string fixed_settings_json(const SeriesPlan& s) {
   return j.dump();
 }
 
+std::vector<std::pair<std::string, std::string>> rung_assignments(const SeriesPlan& s, double value) {
+  std::vector<std::pair<std::string, std::string>> out(s.fixed.begin(), s.fixed.end());
+  out.emplace_back(s.knob_key, text_of(value));
+  if (s.knob == "rtol") out.emplace_back("reference.atol", text_of(value * kAtolPerRtol));
+  return out;
+}
+
 SettingsOverrides rung_overrides(const SettingsOverrides& base, const SeriesPlan& s, double value) {
   SettingsOverrides out = base;
-  for (const auto& [k, v] : s.fixed) out.set(k, v, kSweepSource);
-  out.set(s.knob_key, text_of(value), kSweepSource);
-  if (s.knob == "rtol") out.set("reference.atol", text_of(value * kAtolPerRtol), kSweepSource);
+  for (const auto& [k, v] : rung_assignments(s, value)) out.set(k, v, kSweepSource);
   return out;
 }
 

@@ -55,6 +55,9 @@ struct SeriesPlan {
 // The engine settings of one rung: `base` (the case's [settings] and --set),
 // then the series' fixed settings, then the knob at `value`. For rtol the
 // absolute tolerance follows it: atol = rtol * kAtolPerRtol.
+// the engine keys a rung sets, KEY and VALUE as `--set` would give them
+[[nodiscard]] std::vector<std::pair<std::string, std::string>> rung_assignments(const SeriesPlan& s,
+                                                                                double value);
 [[nodiscard]] SettingsOverrides rung_overrides(const SettingsOverrides& base, const SeriesPlan& s,
                                                double value);
 

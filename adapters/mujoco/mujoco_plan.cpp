@@ -1,5 +1,9 @@
 #include "mujoco_plan.hpp"
 
+#include <fmt/format.h>
+
+#include "planarbench/errors.hpp"
+
 #include <variant>
 
 #include "mujoco_exact_depth.hpp"
@@ -46,6 +50,20 @@ MujocoPlan plan_mujoco(const Case& c, double detection_margin_m) {
     pp.check_depth = pp.collider == Collider::mpr &&
                      exact_penetration_m(a.shape, BodyState{}, b.shape, BodyState{}).has_value();
     plan.pairs.push_back(pp);
+  }
+  long geom_pairs = 0;
+  for (std::size_t k = 0; k < c.contacts.size(); ++k) {
+    if (!plan.pairs[k].present) continue;
+    geom_pairs += static_cast<long>(plan.bodies[static_cast<std::size_t>(c.contacts[k].body_a)].geom_count()) *
+                  plan.bodies[static_cast<std::size_t>(c.contacts[k].body_b)].geom_count();
+  }
+  if (geom_pairs > kMaxGeomPairs) {
+    throw EngineError(fmt::format(
+        "mujoco: the case's contacts need {} explicit geom <pair>s (one per two convex pieces), "
+        "~{:.1f} GB at {} bytes each in MuJoCo's compiler and model; this adapter writes at most "
+        "{} ({:.2f} GB): fewer outline points or fewer concave bodies in contact",
+        geom_pairs, 1e-9 * static_cast<double>(geom_pairs) * kBytesPerGeomPair, kBytesPerGeomPair,
+        kMaxGeomPairs, 1e-9 * static_cast<double>(kMaxGeomPairs) * kBytesPerGeomPair));
   }
   return plan;
 }

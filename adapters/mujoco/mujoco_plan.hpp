@@ -52,7 +52,18 @@ struct MujocoPlan {
   std::vector<PairPlan> pairs;   // index = Case::contacts index
 };
 
-// detection_margin_m: the margin of exact-collider pairs (mujoco.detection_margin)
+// Memory: MuJoCo collides only explicit <pair>s here, one per two convex
+// pieces of a case pair: pieces_a x pieces_b. Its compiler and model take
+// ~2900 bytes a pair (measured with /usr/bin/time -v: two 400-point concave
+// stars, 200 x 200 = 4e4 pairs, peak 139 MB against 24 MB for a disk on the
+// ground). Above kMaxGeomPairs (1e5, ~0.29 GB) plan_mujoco refuses the case
+// before MuJoCo allocates anything, naming the count: two 2000-point stars
+// would need 1e6 pairs, ~2.9 GB. A star on a half-plane needs pieces x 1.
+inline constexpr long kMaxGeomPairs = 100'000;
+inline constexpr long kBytesPerGeomPair = 2900;
+
+// detection_margin_m: the margin of exact-collider pairs (mujoco.detection_margin).
+// Throws EngineError when the case needs more than kMaxGeomPairs geom pairs.
 [[nodiscard]] MujocoPlan plan_mujoco(const Case& c, double detection_margin_m);
 
 }  // namespace pb::internal::mujoco

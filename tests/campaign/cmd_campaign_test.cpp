@@ -4,6 +4,8 @@
 // (tests/campaign/read_campaign.py).
 #include <gtest/gtest.h>
 
+#include "planarbench/results_file.hpp"
+
 #include <unistd.h>
 
 #include <chrono>
@@ -113,6 +115,45 @@ perturb = { sigma = 1e-2, samples = 500000, seed = 7 }
   EXPECT_NE(f.err.find("campaign plan: "), std::string::npos) << f.err;
   EXPECT_NE(f.err.find(" of 2000000 runs"), std::string::npos) << f.err;
   EXPECT_NE(f.err.find("planned in"), std::string::npos) << f.err;
+}
+
+// Each run of a campaign is a process of its own (apps/run_isolation.hpp,
+// issue 24): a spin of 1e200 rad/s trips libode's dIASSERT (SIGABRT), which
+// ended the whole shard before; now that run is diverged naming the signal
+// and the other runs are written (a campaign's diverged runs are rows of its
+// table: the shard exits 0, as for any diverged run).
+TEST(CmdCampaign, AnAbortInOneRunLosesOnlyThatRun) {
+  const fs::path dir = fresh_dir("abort");
+  const fs::path toml = campaign_file(dir, R"(
+[campaign]
+cases = ["falling_ball"]
+engines = ["analytic", "ode"]
+metrics = ["events"]
+set = { duration = 0.01 }
+
+[[axis]]
+key = "bodies.ball.angular_velocity"
+values = [0.0, 1e200]
+)");
+  const Finished r = campaign({"run", toml.string(), "--out", (dir / "parts").string(), "-q"});
+  EXPECT_EQ(r.exit.code, 0) << r.err;
+  const Finished m = campaign({"merge", (dir / "parts").string(), "--out", (dir / "c.h5").string(), "-q"});
+  ASSERT_EQ(m.exit.code, 0) << m.err;
+  const pb::ResultsFile f = pb::read_results_file(dir / "c.h5");
+  ASSERT_TRUE(f.campaign.has_value());
+  ASSERT_EQ(f.campaign->runs.size(), 4u);
+  int diverged = 0;
+  for (const auto& run : f.campaign->runs) {
+    const bool spun = run.axis_values.at(0) > 1.0;
+    if (run.engine == "ode" && spun) {
+      ++diverged;
+      EXPECT_EQ(run.status, pb::RunStatus::diverged);
+      EXPECT_NE(run.reason.find("SIGABRT"), std::string::npos) << run.reason;
+    } else {
+      EXPECT_EQ(run.status, pb::RunStatus::ok) << run.engine << ": " << run.reason;
+    }
+  }
+  EXPECT_EQ(diverged, 1);
 }
 
 TEST(CmdCampaign, ThreeShardsMergeToTheSameDatasetsAsOne) {

@@ -10,6 +10,8 @@
 
 #include "fault_runs.hpp"
 #include "mujoco_fault.hpp"
+#include "mujoco_plan.hpp"
+#include "star_case.hpp"
 #include "mujoco_model.hpp"
 #include "mujoco_stepping.hpp"
 
@@ -133,6 +135,20 @@ TEST(MujocoFault, RunawayWithoutAWarningIsCaughtByTheEnergyCheck) {
   // within 5 steps of the impact: the growth is exponential
   EXPECT_GT(r.diverged_at_s, 0.4965 - 1e-3);
   EXPECT_LT(r.diverged_at_s, 0.4965 + 5e-3);
+}
+
+// Two 2000-point concave stars in contact would need one explicit <pair> per
+// two of their ~1400 convex pieces each: ~1.9e6 pairs, ~5.5 GB in MuJoCo's
+// compiler (issue 24). The run ends before MuJoCo allocates anything, naming
+// the count and the bound; the same star on the ground (pieces x 1) runs.
+TEST(MujocoFaults, StarOnStarBeyondThePairBoundIsRefusedNamingTheCount) {
+  const RunResult r = run_engine(*make_engine("mujoco"), faults_test::star_case(2000, true), {});
+  ASSERT_EQ(r.status, RunStatus::diverged) << r.reason;
+  EXPECT_NE(r.reason.find("explicit geom <pair>s"), std::string::npos) << r.reason;
+  EXPECT_NE(r.reason.find("at most 100000"), std::string::npos) << r.reason;
+  EXPECT_EQ(r.steps, 0);
+  const RunResult ground = run_engine(*make_engine("mujoco"), faults_test::star_case(2000, false), {});
+  EXPECT_EQ(ground.status, RunStatus::ok) << ground.reason;
 }
 
 }  // namespace

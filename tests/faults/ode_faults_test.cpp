@@ -7,14 +7,10 @@
 // free fall are not flagged.
 #include <gtest/gtest.h>
 
-#include <fmt/format.h>
-
-#include <cmath>
 #include <limits>
-#include <numbers>
-#include <string>
 
 #include "fault_runs.hpp"
+#include "star_case.hpp"
 
 namespace pb {
 namespace {
@@ -98,39 +94,7 @@ TEST(OdeFaults, NonFiniteForceEndsTheRunBeforeOdeSeesIt) {
 // issue 24); they are now 2 (V_a + V_b) + 16 (ode_pair_contact.hpp) and the
 // run lands, ok, with contacts.
 TEST(OdeFaults, AConcaveStarOfTwoThousandPointsRuns) {
-  constexpr int kPoints = 2000;
-  std::string pts;
-  for (int i = 0; i < kPoints; ++i) {
-    const double a = 2.0 * std::numbers::pi * i / kPoints;
-    const double r = i % 2 == 0 ? 0.5 : 0.35;  // m: tips and notches
-    pts += fmt::format("[{:.12f}, {:.12f}],", r * std::cos(a), r * std::sin(a));
-  }
-  const std::string text = fmt::format(R"(
-[case]
-description = "a 2000-point concave star dropped on level ground"
-duration = 0.3
-output_interval = 1e-3
-truth = "none"
-[[bodies]]
-name = "ground"
-fixed = true
-shape = {{ type = "halfplane", extent = 10.0 }}
-position = [0.0, 0.0]
-[[bodies]]
-name = "star"
-shape = {{ type = "polygon", points = [{}] }}
-mass = 1.0
-inertia = "shape"
-position = [0.0, 0.6]
-[[contacts]]
-name = "ground_star"
-bodies = ["ground", "star"]
-law = "kelvin_voigt"
-stiffness = 1e4
-damping = 10.0
-)",
-                                       pts);
-  const Case c = parse_case(text, "star.toml", "star", {});
+  const Case c = faults_test::star_case(2000, false);
   auto e = make_engine("ode");
   const RunResult r = run_engine(*e, c, {});
   ASSERT_EQ(r.status, RunStatus::ok) << r.reason;

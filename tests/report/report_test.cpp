@@ -14,6 +14,7 @@
 #include "planarbench/errors.hpp"
 #include "planarbench/results_file.hpp"
 #include "report_files.hpp"
+#include "fake_web_dir.hpp"
 #include "report_test_runs.hpp"
 
 namespace pb {
@@ -28,20 +29,7 @@ class ReportTest : public ::testing::Test {
     dir_ = fs::temp_directory_path() / (std::string("pb_report_test_") +
                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
-    internal::ensure_directory(dir_ / "web" / "node_modules" / "uplot" / "dist");
-    const fs::path u = dir_ / "web" / "node_modules" / "uplot";
-    internal::write_text_atomically(u / "dist" / "uPlot.iife.min.js", "var uPlot = {};");
-    internal::write_text_atomically(u / "dist" / "uPlot.min.css", ".uplot{}");
-    internal::write_text_atomically(u / "LICENSE", "The MIT License (MIT)");
-    internal::write_text_atomically(u / "package.json", R"({"version": "1.6.32"})");
-    internal::write_text_atomically(
-        dir_ / "web" / "report_template.html",
-        "<title>@@TITLE@@</title><style>@@UPLOT_CSS@@@@PAGE_CSS@@</style>"
-        "<script type=\"application/json\" id=\"pb-data\">@@DATA@@</script>"
-        "<script>/*! uPlot @@UPLOT_VERSION@@ @@UPLOT_LICENSE@@ */@@UPLOT_JS@@</script>"
-        "<script>@@PAGE_JS@@</script>");
-    internal::write_text_atomically(dir_ / "web" / "report.js", "var page = 1;");
-    internal::write_text_atomically(dir_ / "web" / "report.css", "body{}");
+    test::write_fake_web_dir(dir_ / "web", "The MIT License (MIT)", "1.6.32");
 
     const Case c = test::falling_ball_case();
     ResultsFile results;

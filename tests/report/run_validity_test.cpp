@@ -21,6 +21,7 @@
 #include "planarbench/reports/thresholds.hpp"
 #include "planarbench/results_file.hpp"
 #include "report_files.hpp"
+#include "fake_web_dir.hpp"
 #include "report_test_runs.hpp"
 
 namespace pb {
@@ -180,20 +181,7 @@ class InvalidRunReport : public ::testing::Test {
            (std::string("pb_run_validity_test_") +
             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
-    const fs::path u = dir_ / "web" / "node_modules" / "uplot";
-    internal::ensure_directory(u / "dist");
-    internal::write_text_atomically(u / "dist" / "uPlot.iife.min.js", "var uPlot = {};");
-    internal::write_text_atomically(u / "dist" / "uPlot.min.css", ".uplot{}");
-    internal::write_text_atomically(u / "LICENSE", "stand-in");
-    internal::write_text_atomically(u / "package.json", R"({"version": "0.0.0"})");
-    internal::write_text_atomically(
-        dir_ / "web" / "report_template.html",
-        "<title>@@TITLE@@</title><style>@@UPLOT_CSS@@@@PAGE_CSS@@</style>"
-        "<script type=\"application/json\" id=\"pb-data\">@@DATA@@</script>"
-        "<script>/*! uPlot @@UPLOT_VERSION@@ @@UPLOT_LICENSE@@ */@@UPLOT_JS@@</script>"
-        "<script>@@PAGE_JS@@</script>");
-    internal::write_text_atomically(dir_ / "web" / "report.js", "var page = 1;");
-    internal::write_text_atomically(dir_ / "web" / "report.css", "body{}");
+    test::write_fake_web_dir(dir_ / "web", "stand-in", "0.0.0");
   }
   void TearDown() override { fs::remove_all(dir_); }
 

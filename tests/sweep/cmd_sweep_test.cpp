@@ -19,6 +19,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "planarbench/sweep_file.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -80,6 +82,30 @@ nlohmann::json read_with_h5py(const fs::path& file) {
                        "/tests/sweep/read_sweep.py " + file.string());
   EXPECT_EQ(o.exit_code, 0) << o.output;
   return o.exit_code == 0 ? nlohmann::json::parse(o.output) : nlohmann::json::object();
+}
+
+// Each rung is a process of its own (apps/run_isolation.hpp, issue 24): a
+// spin of 1e200 rad/s trips libode's dIASSERT (SIGABRT) at its first step,
+// which ended the whole sweep before; now ODE's rungs are diverged naming
+// the signal and the sweep file is written (exit 0: a sweep's diverged rungs
+// are its data, README "planarbench sweep").
+TEST(CmdSweep, AnAbortInsideOdeEndsItsRungsOnly) {
+  const fs::path out = work_dir() / "abort.h5";
+  fs::remove(out);
+  const auto o = run("sweep --case falling_ball --engine ode --quick -q "
+                     "--set bodies.ball.angular_velocity=1e200 --set duration=0.01 --out " +
+                     out.string());
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  ASSERT_TRUE(fs::exists(out)) << o.output;
+  const pb::SweepFile f = pb::read_sweep_file(out);
+  ASSERT_EQ(f.cases.size(), 1u);
+  ASSERT_FALSE(f.cases[0].series.empty());
+  for (const auto& series : f.cases[0].series) {
+    for (const auto& rung : series.rungs) {
+      EXPECT_EQ(rung.status, pb::RunStatus::diverged);
+      EXPECT_TRUE(contains(rung.reason, "SIGABRT")) << rung.reason;
+    }
+  }
 }
 
 TEST(CmdSweep, QuickSweepWritesAFileH5pyReads) {
