@@ -22,6 +22,7 @@
 #include "planarbench/case_loader.hpp"
 #include "planarbench/engines.hpp"
 #include "planarbench/errors.hpp"
+#include "planarbench/output_file.hpp"
 #include "planarbench/reports/friction_metrics.hpp"
 #include "planarbench/results_file.hpp"
 #include "planarbench/runner.hpp"
@@ -452,7 +453,7 @@ int merge_campaign(const CampaignOptionsCli& opt, int argc, char** argv) {
   }
   check_output_file("--out", opt.out);
   const auto parts = part_files(dir);
-  if (fs::weakly_canonical(fs::path(opt.out).parent_path().empty() ? "." : fs::path(opt.out).parent_path(), ec) ==
+  if (fs::weakly_canonical(folder_of(opt.out), ec) ==
           fs::weakly_canonical(dir, ec) &&
       fs::path(opt.out).extension() == ".h5") {
     throw InputError("--out", 0, opt.out,

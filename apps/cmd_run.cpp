@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <mutex>
@@ -35,7 +34,7 @@ struct RunOptionsCli {
   bool quiet = false;
   std::string cases_dir;
   std::string isolation = "process";
-  double run_timeout_s = 3600.0;
+  double run_timeout_s = kDefaultRunTimeout_s;
   int progress_fd = -1;  // a child's: write the fraction done there
 };
 
@@ -94,6 +93,7 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
   check_run_timeout(opt.run_timeout_s);
   // the runs' samples stream to the results file's folder as they are made
   const std::filesystem::path out_target = output_target("--out", opt.out);
+  const std::filesystem::path work_dir = folder_of(out_target);
   check_engine_spec(opt.engine_spec);
   const Overrides overrides = parse_overrides(opt.set);
   // a comma-separated list of case specs is accepted too
@@ -141,11 +141,7 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
     layout.cases.push_back(std::move(cr));
   }
   ResultsFileWriter writer(opt.out, layout);
-  if (opt.isolation == "process") {
-    remove_stale_child_folders(out_target.parent_path().empty() ? std::filesystem::path(".")
-                                                                : out_target.parent_path(),
-                               out_target);
-  }
+  if (opt.isolation == "process") remove_stale_child_folders(work_dir, out_target);
   std::vector<RunStatus> statuses(tasks.size(), RunStatus::ok);
   Progress progress(opt.quiet, tasks.size());
   std::vector<SchedulerTask> plan;
@@ -173,13 +169,9 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
           if (opt.progress_fd >= 0) write_progress(opt.progress_fd, f);
           progress.fraction(i, what, f, last);
         };
-        const std::filesystem::path work_dir = out_target.parent_path().empty()
-                                                   ? std::filesystem::path(".")
-                                                   : out_target.parent_path();
         const SettingsOverrides& settings = case_engine_settings[task.case_index];
         RunResult r;
-        std::filesystem::path child_file;  // the run, written by its own process
-        std::shared_ptr<void> child_folder;
+        IsolatedResult isolated;  // the run's own file, when a process of its own made it
         if (opt.isolation == "process") {
           IsolatedRun spec;
           spec.case_path = std::filesystem::absolute(paths[task.case_index]);
@@ -191,11 +183,9 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
           spec.timeout_s = opt.run_timeout_s;
           spec.work_dir = work_dir;
           spec.target = out_target;
-          IsolatedResult got = run_isolated(spec, on_progress);
-          r = std::move(got.run);
-          child_file = got.file;
-          child_folder = got.folder;
-          if (child_file.empty()) describe_lost_run(r, c, settings);
+          isolated = run_isolated(spec, on_progress);
+          r = std::move(isolated.run);
+          if (isolated.file.empty()) describe_lost_run(r, c, settings);
         } else {
           auto engine = make_engine(task.engine);
           RunOptions ro;
@@ -219,10 +209,10 @@ int run_matrix(const RunOptionsCli& opt, int argc, char** argv) {
         }
         progress.finished(i, what, r);
         statuses[i] = r.status;
-        if (child_file.empty()) {
+        if (isolated.file.empty()) {
           writer.write_run(task.case_index, i % engines.size(), r);
         } else {
-          writer.copy_run(task.case_index, i % engines.size(), child_file);
+          writer.copy_run(task.case_index, i % engines.size(), isolated.file);
         }
       } catch (...) {
         std::lock_guard<std::mutex> lock(error_mutex);

@@ -18,6 +18,7 @@
 #include "planarbench/case_loader.hpp"
 #include "planarbench/engines.hpp"
 #include "planarbench/errors.hpp"
+#include "planarbench/output_file.hpp"
 #include "planarbench/reports/metrics.hpp"
 #include "planarbench/runner.hpp"
 #include "planarbench/sweep_file.hpp"
@@ -121,8 +122,7 @@ int run_sweep(const SweepOptionsCli& opt, int argc, char** argv) {
   }
   // the --out target must be writable before minutes are spent computing it
   check_output_file("--out", opt.out);
-  const fs::path out_dir = fs::path(opt.out).parent_path().empty() ? fs::path(".")
-                                                                    : fs::path(opt.out).parent_path();
+  const fs::path out_dir = folder_of(opt.out);
   const Overrides overrides = parse_overrides(opt.set);
   reject_swept_keys(overrides.engine_keys);
   const auto engines = sweep_engines(opt.engine_spec);

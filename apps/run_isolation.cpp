@@ -79,22 +79,15 @@ std::string signal_name(int sig) {
                      desc ? desc : "unknown signal");
 }
 
-// the last non-empty line of the child's stderr, one line, cut
+// the last non-empty line of the child's stderr, printable (errors.hpp), cut
 std::string last_line(const std::string& text) {
-  std::size_t end = text.size();
-  while (end > 0) {
-    while (end > 0 && (text[end - 1] == '\n' || text[end - 1] == '\r' || text[end - 1] == ' ')) --end;
-    if (end == 0) break;
-    const std::size_t begin = text.rfind('\n', end - 1);
-    const std::size_t b = begin == std::string::npos ? 0 : begin + 1;
-    std::string line = text.substr(b, end - b);
-    for (char& ch : line) {
-      if (static_cast<unsigned char>(ch) < 0x20) ch = ' ';
-    }
-    if (line.size() > kQuoted) line = line.substr(0, kQuoted) + "...";
-    return line;
-  }
-  return {};
+  const std::size_t end = text.find_last_not_of("\r\n ");
+  if (end == std::string::npos) return {};
+  const std::size_t nl = text.rfind('\n', end);
+  const std::size_t begin = nl == std::string::npos ? 0 : nl + 1;
+  std::string line = printable(std::string_view(text).substr(begin, end + 1 - begin));
+  if (line.size() > kQuoted) line = line.substr(0, kQuoted) + "...";
+  return line;
 }
 
 std::vector<std::string> child_arguments(const IsolatedRun& spec, const fs::path& out) {

@@ -106,7 +106,7 @@ fs::path output_target(const std::string& option, const fs::path& path) {
                      fmt::format("is {}, which is not replaced; {}", type_name(link.type()),
                                  kAllowed));
   }
-  const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  const fs::path dir = folder_of(target);
   if (!fs::exists(dir, ec)) {
     throw InputError(option, 0, given,
                      fmt::format("folder '{}' does not exist; {}", dir.string(), kAllowed));
@@ -132,7 +132,7 @@ fs::path output_target(const std::string& option, const fs::path& path) {
 
 AtomicOutput::AtomicOutput(const std::string& option, const fs::path& path)
     : option_(option), given_(path), target_(output_target(option, path)) {
-  const fs::path dir = target_.parent_path().empty() ? fs::path(".") : target_.parent_path();
+  const fs::path dir = folder_of(target_);
   tmp_ = dir / fmt::format("{}{}", temporary_prefix(target_), static_cast<long>(::getpid()));
 }
 
@@ -152,7 +152,7 @@ void AtomicOutput::start_writeback() const {
 }
 
 fs::path AtomicOutput::commit() {
-  const fs::path dir = target_.parent_path().empty() ? fs::path(".") : target_.parent_path();
+  const fs::path dir = folder_of(target_);
   fsync_path(tmp_, O_RDONLY);
   // checked again just before the rename: a FIFO made meanwhile stays
   std::error_code ec;
@@ -205,6 +205,10 @@ fs::path write_text_atomically(const std::string& option, const fs::path& path,
                        fmt::format("write failed ({})", std::strerror(errno)));
     }
   });
+}
+
+fs::path folder_of(const fs::path& path) {
+  return path.parent_path().empty() ? fs::path(".") : path.parent_path();
 }
 
 bool names_dead_process(const std::string& digits) {

@@ -68,6 +68,9 @@ std::filesystem::path write_text_atomically(const std::string& option,
                                             const std::filesystem::path& path,
                                             const std::string& text);
 
+// the folder a file `path` is in: its parent, or "." for a bare name
+[[nodiscard]] std::filesystem::path folder_of(const std::filesystem::path& path);
+
 // `digits` is the decimal pid of no live process on this host, other than
 // this one (a killed writer's temporary or folder may go)
 [[nodiscard]] bool names_dead_process(const std::string& digits);
