@@ -7,6 +7,7 @@
 #include <memory>
 #include <toml++/toml.h>
 
+#include "check_scope.hpp"
 #include "cli_common.hpp"
 #include "threshold_names.hpp"
 #include "commands.hpp"
@@ -31,9 +32,29 @@ struct CheckOptions {
   bool quiet = false;
 };
 
+// runs the bands were not derived for: exit 2 naming them (a few, then a count)
+void refuse_runs_out_of_scope(const std::string& results, const std::vector<RunOutOfScope>& out) {
+  if (out.empty()) return;
+  constexpr std::size_t kNamed = 4;  // one line stays readable
+  std::string runs;
+  for (std::size_t i = 0; i < out.size() && i < kNamed; ++i) {
+    std::string what;
+    for (const auto& d : out[i].differences) what += (what.empty() ? "" : ", ") + d;
+    runs += fmt::format("{}{} ({})", i == 0 ? "" : "; ", out[i].run, what);
+  }
+  if (out.size() > kNamed) runs += fmt::format("; and {} more run(s)", out.size() - kNamed);
+  throw InputError(results, 0, "/runs",
+                   fmt::format("{} run(s) made outside what the thresholds were derived for (each "
+                               "engine's default settings, the case's outline, no "
+                               "foreknowledge): {}; run them at the defaults, or state what the "
+                               "bands also hold for in the thresholds file's `covers`",
+                               out.size(), runs));
+}
+
 int run_check(const CheckOptions& opt) {
   // everything that can be checked before the (large) results file is read
-  const auto thresholds = load_thresholds(opt.thresholds);
+  const ThresholdsFile file = load_thresholds_file(opt.thresholds);
+  const auto& thresholds = file.thresholds;
   const std::filesystem::path res(opt.results);
   const auto stem = res.parent_path() / res.stem();
   const std::string junit = opt.junit.empty() ? stem.string() + ".junit.xml" : opt.junit;
@@ -50,6 +71,7 @@ int run_check(const CheckOptions& opt) {
                                  results.campaign->kind, results.campaign->kind));
   }
   check_threshold_names(opt.thresholds, thresholds, results);
+  refuse_runs_out_of_scope(opt.results, runs_out_of_scope(results, opt.thresholds, file.covers));
 
   std::vector<MetricValue> metrics;
   std::vector<std::string> diverged;
@@ -110,7 +132,11 @@ int run_check(const CheckOptions& opt) {
 Action add_check_command(CLI::App& app) {
   auto opt = std::make_shared<CheckOptions>();
   auto* cmd = app.add_subcommand(
-      "check", "Check a results file against a thresholds file (the CI gate); exit 1 on a breach");
+      "check",
+      "Check a results file against a thresholds file (the CI gate); exit 1 on a breach, 2 on "
+      "bad input, including runs made outside what the thresholds were derived for (an "
+      "engine's non-default settings, foreknowledge, another outline resolution) unless the "
+      "thresholds file's `covers` states them");
   cmd->add_option("--thresholds", opt->thresholds, "Thresholds file (TOML), e.g. cases/thresholds.toml")
       ->required()
       ->check(CLI::ExistingFile);

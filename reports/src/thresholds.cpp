@@ -68,6 +68,10 @@ std::string test_name(const CheckOutcome& o) {
 }  // namespace
 
 std::vector<Threshold> load_thresholds(const std::filesystem::path& path) {
+  return load_thresholds_file(path).thresholds;
+}
+
+ThresholdsFile load_thresholds_file(const std::filesystem::path& path) {
   const std::string file = path.string();
   // a thresholds file is a few hundred lines; anything past this is not one
   constexpr std::uintmax_t kMaxBytes = 1u << 20;  // 1 MiB
@@ -89,11 +93,46 @@ std::vector<Threshold> load_thresholds(const std::filesystem::path& path) {
                      std::string(e.description()));
   }
   for (const auto& [key, node] : doc) {
-    if (key.str() != "threshold") {
+    if (key.str() != "threshold" && key.str() != "constants" && key.str() != "covers") {
       throw InputError(file, line_of(node), std::string(key.str()),
-                       fmt::format("unknown key{}; a thresholds file holds [[threshold]] entries "
-                                   "only",
-                                   did_you_mean(key.str(), {"threshold"})));
+                       fmt::format("unknown key{}; a thresholds file holds `covers`, a "
+                                   "[constants] table and [[threshold]] entries only",
+                                   did_you_mean(key.str(), {"threshold", "constants", "covers"})));
+    }
+  }
+  ThresholdsFile loaded;
+  // covers: what the bands also hold for besides each engine's defaults, the
+  // case's outline and no foreknowledge (apps/check_scope.hpp)
+  if (const toml::node* c = doc.get("covers")) {
+    const toml::array* list = c->as_array();
+    const auto bad = [&](const toml::node& n) {
+      return fmt::format("must be a list of setting keys (\"dt\", \"mujoco.mode\"), "
+                         "\"foreknowledge\" or \"outline_points\" (got {})",
+                         describe(n));
+    };
+    if (list == nullptr) throw InputError(file, line_of(*c), "covers", bad(*c));
+    for (const auto& n : *list) {
+      if (!n.is_string() || n.as_string()->get().empty()) {
+        throw InputError(file, line_of(n), "covers", bad(n));
+      }
+      loaded.covers.push_back(n.as_string()->get());
+    }
+  }
+  // [constants]: named figures the bounds use, each an expression as a string;
+  // evaluated by tests/python/threshold_derivations.py, not by the gate
+  if (const toml::node* c = doc.get("constants")) {
+    const toml::table* tab = c->as_table();
+    if (tab == nullptr) {
+      throw InputError(file, line_of(*c), "constants",
+                       fmt::format("must be a table of name = \"expression\" (got {})",
+                                   describe(*c)));
+    }
+    for (const auto& [key, node] : *tab) {
+      if (!node.is_string() || node.as_string()->get().empty()) {
+        throw InputError(file, line_of(node), "constants." + std::string(key.str()),
+                         fmt::format("must be a non-empty string holding an expression (got {})",
+                                     describe(node)));
+      }
     }
   }
   const toml::node* entries = doc.get("threshold");
@@ -106,7 +145,7 @@ std::vector<Threshold> load_thresholds(const std::filesystem::path& path) {
   }
   static const std::vector<std::string> allowed = {
       "case", "engine", "against", "metric", "episode", "atol", "rtol", "why", "known_breach",
-      "by_construction"};
+      "by_construction", "bound"};
   const std::vector<std::string> metrics(metric_names().begin(), metric_names().end());
   std::vector<Threshold> out;
   for (std::size_t i = 0; i < arr->size(); ++i) {
@@ -155,6 +194,7 @@ std::vector<Threshold> load_thresholds(const std::filesystem::path& path) {
     number("atol", th.atol);
     number("rtol", th.rtol);
     if (t->get("known_breach") != nullptr) text("known_breach", th.known_breach);
+    if (t->get("bound") != nullptr) text("bound", th.bound);
     if (const auto* n = t->get("by_construction")) {
       if (!n->is_boolean()) {
         throw InputError(file, line_of(*n), where + ".by_construction",
@@ -193,7 +233,8 @@ std::vector<Threshold> load_thresholds(const std::filesystem::path& path) {
     }
     out.push_back(th);
   }
-  return out;
+  loaded.thresholds = std::move(out);
+  return loaded;
 }
 
 bool fails_gate(const CheckOutcome& o) {
@@ -303,6 +344,10 @@ std::string junit_xml(const std::vector<CheckOutcome>& outcomes,
     x += fmt::format("        <property name=\"error\" value=\"{:.9g}\"/>\n", o.value.error);
     x += fmt::format("        <property name=\"limit\" value=\"{:.9g}\"/>\n", o.limit);
     x += fmt::format("        <property name=\"why\" value=\"{}\"/>\n", xml_escaped(o.threshold.why));
+    if (!o.threshold.bound.empty()) {
+      x += fmt::format("        <property name=\"bound\" value=\"{}\"/>\n",
+                       xml_escaped(o.threshold.bound));
+    }
     x += fmt::format("        <property name=\"outcome\" value=\"{}\"/>\n", outcome_label(o));
     if (!o.threshold.known_breach.empty()) {
       x += fmt::format("        <property name=\"known_breach\" value=\"{}\"/>\n",

@@ -216,17 +216,81 @@ TEST(Gate, FullMatrixPassesTheCommittedThresholds) {
   EXPECT_TRUE(fs::exists(work_dir() / "gate_all.summary.md"));
 }
 
-// ODE's textbook ERP/CFM mapping adds h k of numerical damping: the
-// restitution leaves its 1 % band and check exits 1 naming the metric.
+// a copy of the committed thresholds stating that its bands also hold for `covers`
+fs::path thresholds_covering(const std::string& name, const std::string& covers) {
+  const auto p = work_dir() / name;
+  std::ifstream in(std::string(PB_SOURCE_DIR) + "/cases/thresholds.toml");
+  std::ofstream f(p);
+  f << "covers = [" << covers << "]\n" << in.rdbuf();
+  return p;
+}
+
+// ODE's textbook ERP/CFM mapping adds h k of numerical damping. The committed
+// bands were derived for the default (corrected) mapping: check refuses to
+// judge the run with them (exit 2 naming it and the setting); a thresholds
+// file that states it covers the setting judges it, and the restitution
+// leaves its band (exit 1 naming the metric).
 TEST(Gate, OneEngineParameterChangeBreachesAndIsNamed) {
   const auto out = work_dir() / "gate_textbook.h5";
   const auto r = run("run --case falling_ball --engine analytic,ode --quiet "
                      "--set ode.damping_mapping=textbook --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
-                     "/cases/thresholds.toml " + out.string());
+  const auto refused = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
+                           "/cases/thresholds.toml " + out.string());
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_TRUE(contains(refused.output, "falling_ball.ode (ode.damping_mapping = \"textbook\" "
+                                       "(derived for \"corrected\"))"))
+      << refused.output;
+  const auto covering = thresholds_covering("covers_damping.toml", "\"ode.damping_mapping\"");
+  const auto c = run("check --thresholds " + covering.string() + " " + out.string());
   EXPECT_EQ(c.exit_code, 1) << c.output;
   EXPECT_TRUE(contains(c.output, "BREACH falling_ball.ode restitution vs truth")) << c.output;
+}
+
+// Results made with foreknowledge (MuJoCo's and ODE's `oracle` modes: a probe
+// run of the case calibrates the mapping) are refused, naming every such run,
+// the mode and the foreknowledge; nothing is written.
+TEST(Gate, OracleResultsAreRefusedNamingTheRuns) {
+  const auto out = work_dir() / "gate_oracle.h5";
+  const auto r = run("run --case falling_ball --engine analytic,mujoco,ode,box2d --quiet "
+                     "--set mujoco.mode=oracle --set ode.mode=oracle --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
+                     "/cases/thresholds.toml " + out.string());
+  EXPECT_EQ(c.exit_code, 2) << c.output;
+  EXPECT_TRUE(contains(c.output, "2 run(s) made outside what the thresholds were derived for"))
+      << c.output;
+  EXPECT_TRUE(contains(c.output, "falling_ball.mujoco (mujoco.mode = \"oracle\" (derived for "
+                                 "\"native\"), foreknowledge"))
+      << c.output;
+  EXPECT_TRUE(contains(c.output, "falling_ball.ode (ode.mode = \"oracle\"")) << c.output;
+  EXPECT_FALSE(contains(c.output, "falling_ball.box2d (")) << c.output;
+  EXPECT_FALSE(fs::exists(work_dir() / "gate_oracle.junit.xml"));
+  EXPECT_FALSE(fs::exists(work_dir() / "gate_oracle.summary.md"));
+}
+
+// A step or an outline other than the case's is refused the same way; a file
+// whose `covers` states the step is judged.
+TEST(Gate, ChangedStepOrOutlineIsRefused) {
+  const auto dt = work_dir() / "gate_dt.h5";
+  ASSERT_EQ(run("run --case falling_ball --engine analytic,box2d --quiet --set dt=2e-4 --out " +
+                dt.string()).exit_code, 0);
+  const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
+                     "/cases/thresholds.toml " + dt.string());
+  EXPECT_EQ(c.exit_code, 2) << c.output;
+  EXPECT_TRUE(contains(c.output, "falling_ball.box2d (box2d.dt = 0.0002 (derived for 0.0001))"))
+      << c.output;
+  const auto outline = work_dir() / "gate_outline.h5";
+  ASSERT_EQ(run("run --case falling_ball --engine analytic,reference --quiet "
+                "--set outline_points=90 --out " + outline.string()).exit_code, 0);
+  const auto o = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
+                     "/cases/thresholds.toml " + outline.string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_TRUE(contains(o.output, "bodies.ball.outline_points = 90 (derived for 180)")) << o.output;
+  const auto covering = thresholds_covering("covers_dt.toml", "\"dt\"");
+  const auto judged = run("check --thresholds " + covering.string() + " " + dt.string());
+  EXPECT_NE(judged.exit_code, 2) << judged.output;
+  EXPECT_TRUE(contains(judged.output, "checks passed")) << judged.output;
 }
 
 TEST(Gate, BadThresholdsFileIsBadInput) {

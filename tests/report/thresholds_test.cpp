@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <limits>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "planarbench/errors.hpp"
 #include "report_files.hpp"
@@ -147,6 +149,34 @@ TEST_F(ThresholdsFile, RefusesBadKnownBreachAndByConstruction) {
       EXPECT_NE(what.find(std::string(bad).substr(0, std::string(bad).find(' '))),
                 std::string::npos)
           << what;
+    }
+  }
+}
+
+TEST_F(ThresholdsFile, ReadsBoundAndConstants) {
+  const auto t = load_thresholds(write("[constants]\nh = \"1e-4\"  # s\nwh = \"100 * h\"\n\n" +
+                                       std::string(kEntry) + "bound = \"wh\"\n"));
+  ASSERT_EQ(t.size(), 1u);
+  EXPECT_EQ(t[0].bound, "wh");
+  EXPECT_TRUE(load_thresholds(write(kEntry))[0].bound.empty());
+}
+
+TEST_F(ThresholdsFile, RefusesBadBoundAndConstants) {
+  // each: the file's text, the line and the field the message must name
+  const std::vector<std::tuple<std::string, std::string, std::string>> bad = {
+      {std::string(kEntry) + "bound = 0.01\n", "t.toml:8", "bound"},
+      {std::string(kEntry) + "bound = \"\"\n", "t.toml:8", "bound"},
+      {"[constants]\nh = 1e-4\n" + std::string(kEntry), "t.toml:2", "constants.h"},
+      {"constants = 3\n" + std::string(kEntry), "t.toml:1", "constants"},
+      {"[constant]\nh = \"1\"\n" + std::string(kEntry), "t.toml:1", "did you mean 'constants'"}};
+  for (const auto& [text, line, field] : bad) {
+    try {
+      (void)load_thresholds(write(text));
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(line), std::string::npos) << what;
+      EXPECT_NE(what.find(field), std::string::npos) << what;
     }
   }
 }

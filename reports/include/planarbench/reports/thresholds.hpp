@@ -29,10 +29,25 @@ struct Threshold {
   // the tolerance holds by construction (e.g. a joint that is a generalized
   // coordinate), not by a numerical bound; the report labels it so
   bool by_construction = false;
+  // the bound the tolerance is derived from, as an arithmetic expression over
+  // numbers and the file's [constants] (tests/python/threshold_derivations.py
+  // evaluates it and checks the tolerance against it); empty: none given
+  std::string bound;
   int line = 0;          // in the thresholds file
 };
 
+// A thresholds file: its thresholds, and what its bands also hold for besides
+// each engine's default settings, the case's outline and no foreknowledge
+// (`covers`: setting keys, "foreknowledge", "outline_points"; the gate
+// refuses runs made otherwise, apps/check_scope.hpp).
+struct ThresholdsFile {
+  std::vector<Threshold> thresholds;
+  std::vector<std::string> covers;
+};
+
 // Loads and validates a thresholds file (InputError naming file, line, field).
+[[nodiscard]] ThresholdsFile load_thresholds_file(const std::filesystem::path& path);
+// Its thresholds only.
 [[nodiscard]] std::vector<Threshold> load_thresholds(const std::filesystem::path& path);
 
 // One checked (threshold, metric value) pair.

@@ -1,0 +1,98 @@
+#include "check_scope.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
+
+#include "cli_common.hpp"
+#include "planarbench/case_loader.hpp"
+#include "planarbench/engines.hpp"
+
+namespace pb::cli {
+
+namespace {
+
+bool covered(const std::vector<std::string>& covers, const std::string& engine,
+             const std::string& key) {
+  return std::find(covers.begin(), covers.end(), key) != covers.end() ||
+         std::find(covers.begin(), covers.end(), engine + "." + key) != covers.end();
+}
+
+// the case the bands were derived from: the file beside the thresholds, if any
+std::optional<Case> derived_case(const std::filesystem::path& thresholds_file,
+                                 const std::string& case_name) {
+  const auto path = thresholds_file.parent_path() / (case_name + ".toml");
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
+  return load_case(path);
+}
+
+// outline resolutions that differ, body by body
+void outline_differences(const Case& run, const Case& derived, std::vector<std::string>& out) {
+  for (const Body& b : run.bodies) {
+    const int i = derived.body_index(b.name);
+    if (i < 0) continue;
+    const int d = derived.bodies[static_cast<std::size_t>(i)].outline_points;
+    if (b.outline_points != d) {
+      out.push_back(fmt::format("bodies.{}.outline_points = {} (derived for {})", b.name,
+                                b.outline_points, d));
+    }
+  }
+}
+
+// the engine's settings as the bands assume them: its defaults under the
+// derived case's own [settings] table
+nlohmann::json derived_settings(const std::string& engine, const Case& derived) {
+  auto e = make_engine(engine);
+  e->settings().apply(engine_settings_for(derived, {}));
+  return e->settings().to_json();
+}
+
+}  // namespace
+
+std::vector<RunOutOfScope> runs_out_of_scope(const ResultsFile& results,
+                                             const std::filesystem::path& thresholds_file,
+                                             const std::vector<std::string>& covers) {
+  std::vector<RunOutOfScope> out;
+  for (const auto& cr : results.cases) {
+    SettingsOverrides case_keys;
+    for (const auto& [key, value] : cr.overrides) {
+      if (is_case_key(key)) case_keys.set(key, value, SettingSource{"--set", 0});
+    }
+    const Case as_run = parse_case(cr.case_text, cr.case_path, cr.case_name, case_keys);
+    const std::optional<Case> beside = derived_case(thresholds_file, cr.case_name);
+    const Case derived = beside ? *beside : parse_case(cr.case_text, cr.case_path, cr.case_name);
+    std::vector<std::string> case_differences;
+    if (!covered(covers, "", "outline_points")) outline_differences(as_run, derived, case_differences);
+    for (const auto& r : cr.runs) {
+      // the truth is judged by no band; an unsupported run has nothing to judge
+      if (r.engine_name == "analytic" || r.status == RunStatus::unsupported) continue;
+      RunOutOfScope s{fmt::format("{}.{}", cr.case_name, r.engine_name), case_differences};
+      const nlohmann::json want = derived_settings(r.engine_name, derived);
+      for (const auto& [key, value] : want.items()) {
+        if (covered(covers, r.engine_name, key)) continue;
+        const auto got = r.settings.find(key);
+        if (got == r.settings.end()) {
+          s.differences.push_back(fmt::format("{}.{} not recorded (derived for {})",
+                                              r.engine_name, key, value.dump()));
+        } else if (*got != value) {
+          s.differences.push_back(fmt::format("{}.{} = {} (derived for {})", r.engine_name, key,
+                                              got->dump(), value.dump()));
+        }
+      }
+      const auto physics = r.mapping.find("physics");
+      if (physics != r.mapping.end() && physics->is_object() &&
+          physics->value("foreknowledge", false) && !covered(covers, "", "foreknowledge")) {
+        s.differences.push_back("foreknowledge (a probe run of the case before the run)");
+      }
+      if (!s.differences.empty()) out.push_back(std::move(s));
+    }
+  }
+  return out;
+}
+
+}  // namespace pb::cli

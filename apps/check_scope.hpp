@@ -1,0 +1,34 @@
+// What a thresholds file's bands were derived for (issue 25): each engine at
+// its default settings (under the case's own [settings] table), without
+// foreknowledge, at the case's own outline resolution. The whys derive their
+// numbers from exactly that (the step h, the native mapping, the outline
+// sag): a run made otherwise would be judged by bounds that do not hold for
+// it, so `check` refuses it unless the thresholds file states, in `covers`,
+// what else its bands hold for.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "planarbench/results_file.hpp"
+
+namespace pb::cli {
+
+// A run made outside what the bands were derived for, and how.
+struct RunOutOfScope {
+  std::string run;                        // "case.engine"
+  std::vector<std::string> differences;   // "mujoco.mode = \"oracle\" (derived for \"native\")"
+};
+
+// The runs of `results` that the thresholds in `thresholds_file` were not
+// derived for. The baseline case of a run is the case file of the same name
+// beside the thresholds file when there is one (the case the bands were
+// derived from), else the case text stored with the run. `covers` lists what
+// the file states its bands also hold for: a setting key ("dt" for every
+// engine, "mujoco.mode" for one), "foreknowledge" or "outline_points".
+[[nodiscard]] std::vector<RunOutOfScope> runs_out_of_scope(
+    const ResultsFile& results, const std::filesystem::path& thresholds_file,
+    const std::vector<std::string>& covers);
+
+}  // namespace pb::cli

@@ -1,0 +1,281 @@
+#!/usr/bin/python3
+"""Every threshold of a thresholds file derived, labelled by construction, or a
+known breach (issue 25, item 1; the format is in cases/thresholds.toml's header).
+
+    threshold_derivations.py cases/thresholds.toml
+
+Evaluates the [constants] (in order; each may use those above it) and every
+`bound` with a small evaluator over Python's AST (numbers, + - * / **, unary
+minus, parentheses, a fixed set of functions, pi and the constants: nothing
+else is run), then checks each [[threshold]]:
+  - exactly one of: bound (derived), by_construction = true, known_breach
+    (a known breach may also carry a bound: the band it is judged against);
+  - atol or rtol, never both; t = rtol if set, else atol;
+  - with a bound b: b finite and >= 0; t >= b (no band tighter than its
+    bound); t <= max(1.1 b, b rounded up to 2 significant digits) (no pad);
+    b = 0 requires t = 0;
+  - a why without the phrases the format forbids (a pad, interpolation).
+Prints the table total / derived / by construction / known breach / other per
+engine and for the file; exits 1 when other > 0 (naming each offending
+threshold and why) or a constant does not evaluate. A self-test runs first so
+the checks themselves can be seen to fail.
+"""
+
+import ast
+import math
+import re
+import sys
+import tomllib
+
+FUNCTIONS = {
+    "sqrt": math.sqrt, "exp": math.exp, "log": math.log, "sin": math.sin, "cos": math.cos,
+    "tan": math.tan, "asin": math.asin, "acos": math.acos, "atan": math.atan, "abs": abs,
+    "min": min, "max": max,
+}
+BINARY = {
+    ast.Add: lambda a, b: a + b, ast.Sub: lambda a, b: a - b, ast.Mult: lambda a, b: a * b,
+    ast.Div: lambda a, b: a / b, ast.Pow: lambda a, b: a ** b,
+}
+# exponents in bounds are small integers (squares, halves); a larger one is a slip
+# and could make ** run for long on an integer base
+MAX_EXPONENT = 16.0
+# a band written out as its bound's decimal may differ from the evaluated bound
+# by the rounding of a double (2.2e-16 relative); 1e-12 is far above that and far
+# below any real difference between a band and its bound
+REL_ROUNDING = 1e-12
+# phrases the format forbids in a why (cases/thresholds.toml's header)
+FORBIDDEN = [
+    (re.compile(r"\+\s*1\s*%"), "a pad ('+ 1 %')"),
+    (re.compile(r"\bpad(ded)?\b", re.I), "a pad"),
+    (re.compile(r"between the last", re.I), "interpolation between other cases"),
+    (re.compile(r"no closed-form bound", re.I), "no bound stated"),
+]
+
+
+class BoundError(Exception):
+    pass
+
+
+def evaluate(text, names):
+    """The value of expression `text` over `names` (a dict); BoundError if not allowed."""
+    try:
+        tree = ast.parse(text.strip(), mode="eval")
+    except SyntaxError as e:
+        raise BoundError(f"not an expression: {e.msg}") from None
+
+    def ev(node):
+        if isinstance(node, ast.Expression):
+            return ev(node.body)
+        if isinstance(node, ast.Constant):
+            if isinstance(node.value, bool) or not isinstance(node.value, (int, float)):
+                raise BoundError(f"only numbers are allowed, not {node.value!r}")
+            return float(node.value)
+        if isinstance(node, ast.Name):
+            if node.id == "pi":
+                return math.pi
+            if node.id in names:
+                return names[node.id]
+            raise BoundError(f"unknown name '{node.id}' (not pi, nor a constant above it)")
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
+            v = ev(node.operand)
+            return -v if isinstance(node.op, ast.USub) else v
+        if isinstance(node, ast.BinOp) and type(node.op) in BINARY:
+            a, b = ev(node.left), ev(node.right)
+            if isinstance(node.op, ast.Pow) and abs(b) > MAX_EXPONENT:
+                raise BoundError(f"exponent {b:g} is larger than {MAX_EXPONENT:g}")
+            try:
+                return float(BINARY[type(node.op)](a, b))
+            except (ZeroDivisionError, OverflowError) as e:
+                raise BoundError(str(e)) from None
+        if isinstance(node, ast.Call):
+            if not isinstance(node.func, ast.Name) or node.func.id not in FUNCTIONS:
+                raise BoundError(f"unknown function in '{ast.unparse(node)}'; allowed: "
+                                 + " ".join(FUNCTIONS))
+            if node.keywords or not node.args:
+                raise BoundError(f"'{ast.unparse(node)}': give positional arguments only")
+            args = [ev(a) for a in node.args]
+            try:
+                return float(FUNCTIONS[node.func.id](*args))
+            except (ValueError, TypeError, OverflowError) as e:
+                raise BoundError(f"'{ast.unparse(node)}': {e}") from None
+        raise BoundError(f"'{ast.unparse(node)}' is not allowed (numbers, + - * / **, "
+                         "functions, pi and constants only)")
+
+    v = ev(tree)
+    if isinstance(v, complex):
+        raise BoundError("the value is complex")
+    return v
+
+
+def evaluate_constants(table):
+    """(values, errors): each constant over those above it."""
+    values, errors = {}, []
+    for name, text in table.items():
+        if not isinstance(text, str):
+            errors.append(f"constants.{name}: must be a string expression (got {text!r})")
+            continue
+        if name == "pi" or name in FUNCTIONS:
+            errors.append(f"constants.{name}: the name is taken by pi or a function")
+            continue
+        try:
+            values[name] = evaluate(text, values)
+        except BoundError as e:
+            errors.append(f"constants.{name} = \"{text}\": {e}")
+    return values, errors
+
+
+def round_up_2_significant(b):
+    if b <= 0:
+        return b
+    unit = 10.0 ** (math.floor(math.log10(b)) - 1)
+    return math.ceil(b / unit * (1 - REL_ROUNDING)) * unit
+
+
+def classify(th, constants):
+    """(category, problems): category one of derived, by_construction, known_breach, other."""
+    problems = []
+    has_bound = "bound" in th
+    by_construction = th.get("by_construction") is True
+    known = bool(th.get("known_breach"))
+    labels = [n for n, on in (("bound", has_bound), ("by_construction", by_construction),
+                              ("known_breach", known)) if on]
+    if known and labels == ["bound", "known_breach"]:
+        category = "known_breach"
+    elif len(labels) == 1:
+        category = {"bound": "derived", "by_construction": "by_construction",
+                    "known_breach": "known_breach"}[labels[0]]
+    elif not labels:
+        category = "other"
+        problems.append("none of bound, by_construction = true, known_breach: derive it")
+    else:
+        category = "other"
+        problems.append(f"{' and '.join(labels)}: give exactly one (a known breach may add a bound)")
+    if "atol" in th and "rtol" in th:
+        problems.append("sets both atol and rtol: give one")
+    t = th.get("rtol", th.get("atol"))
+    if not isinstance(t, (int, float)) or isinstance(t, bool):
+        problems.append("no numeric atol or rtol")
+        t = None
+    why = th.get("why", "")
+    for pattern, what in FORBIDDEN:
+        if pattern.search(why):
+            problems.append(f"why contains {what}")
+    if has_bound:
+        try:
+            b = evaluate(str(th["bound"]), constants)
+        except BoundError as e:
+            b = None
+            problems.append(f"bound \"{th['bound']}\": {e}")
+        if b is not None:
+            if not math.isfinite(b) or b < 0:
+                problems.append(f"bound evaluates to {b:g}: must be finite and >= 0")
+            elif t is not None:
+                kind = "rtol" if "rtol" in th else "atol"
+                upper = max(1.1 * b, round_up_2_significant(b))
+                if b == 0 and t != 0:
+                    problems.append(f"bound is 0 but {kind} = {t:g}: must be 0")
+                elif t < b * (1 - REL_ROUNDING):
+                    problems.append(f"{kind} = {t:g} is tighter than its bound {b:.6g}")
+                elif t > upper * (1 + REL_ROUNDING):
+                    problems.append(f"{kind} = {t:g} is padded: bound {b:.6g}, at most "
+                                    f"{upper:.6g} (1.1 b or b rounded up to 2 digits)")
+    return ("other" if problems else category), problems
+
+
+def name_of(th):
+    ep = th.get("episode")
+    return (f"{th.get('case')}.{th.get('engine')} {th.get('metric')} vs {th.get('against')}"
+            f" [episode {'all' if ep is None else ep}]")
+
+
+def check(doc):
+    """(rows per engine, offences, constant errors)."""
+    constants, errors = evaluate_constants(doc.get("constants", {}))
+    counts, offences = {}, []
+    for th in doc.get("threshold", []):
+        category, problems = classify(th, constants)
+        row = counts.setdefault(th.get("engine", "?"), dict.fromkeys(
+            ("derived", "by_construction", "known_breach", "other"), 0))
+        row[category] += 1
+        if problems:
+            offences.append(f"{name_of(th)}: {'; '.join(problems)}")
+    return counts, offences, errors
+
+
+def self_test():
+    """The checks catch an underived, a padded and a too-tight entry; a good one passes."""
+    head = ('[constants]\nh = "1e-4"\nomega = "sqrt(1e4 / 1.0)"\nomega_h = "omega * h"\n'
+            "# end of constants\n")
+
+    def entry(extra):
+        return ('[[threshold]]\ncase = "c"\nengine = "e"\nagainst = "truth"\n'
+                f'metric = "peak_force"\nwhy = "w"\n{extra}\n')
+
+    cases = {
+        "good": (entry('rtol = 0.01\nbound = "omega_h"'), 0),
+        "good, rounded up": (entry('rtol = 0.0105\nbound = "omega_h * 1.04"'), 0),
+        "underived": (entry("rtol = 0.01"), 1),
+        "padded": (entry('rtol = 0.02\nbound = "omega_h"'), 1),
+        "too tight": (entry('rtol = 0.009\nbound = "omega_h"'), 1),
+        "both tolerances": (entry('rtol = 0.01\natol = 0.01\nbound = "omega_h"'), 1),
+        "zero bound, nonzero band": (entry('atol = 1e-9\nbound = "0"'), 1),
+        "code in a bound": (entry('rtol = 0.01\nbound = "__import__(\'os\').getpid()"'), 1),
+        "unknown name": (entry('rtol = 0.01\nbound = "omega_k"'), 1),
+        "bound and by construction": (entry('rtol = 0.01\nbound = "omega_h"\n'
+                                            "by_construction = true"), 1),
+        "known breach with its band": (entry('rtol = 0.01\nbound = "omega_h"\n'
+                                             'known_breach = "k"'), 0),
+        "a pad in the why": (entry('rtol = 0.01\nbound = "omega_h"').replace(
+            'why = "w"', 'why = "omega h + 1 %"'), 1),
+    }
+    failures = []
+    for label, (text, want) in cases.items():
+        _, offences, errors = check(tomllib.loads(head + text))
+        if errors or len(offences) != want:
+            failures.append(f"self-test '{label}': {len(offences)} offence(s) {offences}, "
+                            f"expected {want}; constant errors {errors}")
+    _, _, errors = check(tomllib.loads('[constants]\na = "b + 1"\nb = "1"\n'))
+    if not errors:
+        failures.append("self-test: a constant using one defined below it was accepted")
+    if abs(round_up_2_significant(0.0314159) - 0.032) > 1e-15 or \
+            abs(round_up_2_significant(0.03) - 0.03) > 1e-15:
+        failures.append("self-test: rounding up to 2 significant digits is wrong")
+    return failures
+
+
+def main(argv):
+    if len(argv) != 2:
+        print("usage: threshold_derivations.py THRESHOLDS.toml", file=sys.stderr)
+        return 2
+    failures = self_test()
+    if failures:
+        print("\n".join(failures))
+        return 1
+    try:
+        with open(argv[1], "rb") as f:
+            doc = tomllib.load(f)
+    except (OSError, tomllib.TOMLDecodeError) as e:
+        print(f"{argv[1]}: {e}")
+        return 1
+    counts, offences, errors = check(doc)
+    cols = ("derived", "by_construction", "known_breach", "other")
+    print(f"{'engine':<12} {'total':>6} {'derived':>8} {'by constr.':>10} {'known br.':>9} "
+          f"{'other':>6}")
+    total = dict.fromkeys(cols, 0)
+    for engine in sorted(counts):
+        row = counts[engine]
+        for c in cols:
+            total[c] += row[c]
+        print(f"{engine:<12} {sum(row.values()):>6} {row['derived']:>8} "
+              f"{row['by_construction']:>10} {row['known_breach']:>9} {row['other']:>6}")
+    print(f"{'all':<12} {sum(total.values()):>6} {total['derived']:>8} "
+          f"{total['by_construction']:>10} {total['known_breach']:>9} {total['other']:>6}")
+    for e in errors:
+        print(f"{argv[1]}: {e}")
+    for o in offences:
+        print(f"{argv[1]}: {o}")
+    return 1 if offences or errors else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
