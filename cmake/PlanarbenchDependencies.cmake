@@ -12,6 +12,9 @@ find_package(Threads REQUIRED)
 # CGAL 5 (header-only): 2-D polygon partitioning, the convex pieces of concave
 # bodies (core/src/convex_pieces.cpp)
 find_package(CGAL 5 REQUIRED)
+# Boost (header-only parts, libboost-dev): Boost.Odeint and Boost.Math's
+# minimiser for the independent truth (core/independent)
+find_package(Boost 1.74 REQUIRED)
 find_package(mujoco 2.2 REQUIRED)
 find_package(box2d 2.4 REQUIRED)
 find_package(PkgConfig REQUIRED)

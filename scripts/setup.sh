@@ -10,6 +10,7 @@ PACKAGES=(
   libbox2d-dev
   libode-dev
   libcgal-dev                  # convex pieces of concave bodies (CGAL 2-D polygon partitioning)
+  libboost-dev                 # Boost.Odeint and Boost.Math (header-only): the independent truth
   libhdf5-dev hdf5-tools
   zlib1g-dev                   # results-file chunks deflated in parallel
   libbenchmark-dev

@@ -5,10 +5,13 @@
 // (dual_pendulum, pendulum_wall); there it has no time step: advance_to lands
 // on t exactly, and steps() counts the phases of the piecewise closed form
 // begun so far. Where the closed form ends (after the pendulums' first
-// contact) or where there is none (truth = converged), the truth is the
-// reference solver at exact geometry and tight tolerance, with a Richardson
-// estimate of its error (converged_reference.hpp); the mapping says which
-// part is which.
+// contact) or where there is none (truth = converged), the truth is
+// numerical (numerical_truth.hpp): the independent truth (core/independent,
+// no code shared with the reference solver or the adapters) where it covers
+// the case, with its agreement with the converged reference in the mapping;
+// else the reference solver at exact geometry and tight tolerance, with a
+// Richardson estimate of its error (converged_reference.hpp). The mapping
+// says which part is which.
 #include "planarbench/analytic/analytic_engine.hpp"
 
 #include <fmt/format.h>
@@ -19,7 +22,7 @@
 
 #include "body_on_line.hpp"
 #include "closed_form_match.hpp"
-#include "converged_reference.hpp"
+#include "numerical_truth.hpp"
 #include "pendulums_until_contact.hpp"
 #include "planarbench/build_info.hpp"
 #include "planarbench/errors.hpp"
@@ -29,6 +32,12 @@
 namespace pb {
 
 namespace {
+
+// the independent truth in one line (supports())
+constexpr const char* kIndependentText =
+    "the independent truth (core/independent): exact geometry in closed form, the law written "
+    "again from the paper's equations, Boost.Odeint dopri5 at abs and rel 1e-12 with located "
+    "contact events; its agreement with the converged reference in the mapping";
 
 // why the reference at exact geometry cannot run the case ("" when it can)
 std::string exact_geometry_reason(const Case& c) {
@@ -60,22 +69,29 @@ class AnalyticEngine final : public Engine {
 
   [[nodiscard]] Capability supports(const Case& c) const override {
     if (c.truth == TruthKind::converged) {
+      if (internal::NumericalTruth::independent_unsupported(c).empty()) {
+        return {Support::mapped, std::string("no closed form: the truth is ") + kIndependentText};
+      }
       if (auto why = exact_geometry_reason(c); !why.empty()) {
         return {Support::unsupported, "truth = converged: " + why};
       }
       return {Support::mapped,
               "no closed form: the truth is the reference solver at exact geometry, rk45 at "
-              "rtol 1e-10, shown converged (Richardson estimate in the mapping)"};
+              "rtol 1e-12, shown converged (Richardson estimate in the mapping)"};
     }
     const internal::ClosedFormMatch m = internal::match_closed_form(c);
     if (m.kind == internal::ClosedFormKind::none) return {Support::unsupported, m.reason};
     if (m.kind == internal::ClosedFormKind::pendulums_until_contact) {
+      if (internal::NumericalTruth::independent_unsupported(c).empty()) {
+        return {Support::mapped,
+                std::string("closed form up to the first contact; after it ") + kIndependentText};
+      }
       if (auto why = exact_geometry_reason(c); !why.empty()) {
         return {Support::unsupported, "after the first contact: " + why};
       }
       return {Support::mapped,
               "closed form up to the first contact; after it the reference solver at exact "
-              "geometry, rk45 at rtol 1e-10, shown converged (Richardson estimate in the mapping)"};
+              "geometry, rk45 at rtol 1e-12, shown converged (Richardson estimate in the mapping)"};
     }
     return {Support::native, {}};
   }
@@ -91,10 +107,11 @@ class AnalyticEngine final : public Engine {
     time_s_ = 0.0;
     handover_s_ = std::numeric_limits<double>::infinity();
     if (c.truth == TruthKind::converged) {
-      if (auto why = exact_geometry_reason(c); !why.empty()) {
+      if (auto why = exact_geometry_reason(c);
+          !why.empty() && !internal::NumericalTruth::independent_unsupported(c).empty()) {
         throw EngineError("analytic: truth = converged: " + why);
       }
-      numeric_ = std::make_unique<internal::ConvergedReference>(c);
+      numeric_ = std::make_unique<internal::NumericalTruth>(c);
       handover_s_ = 0.0;
       return;
     }
@@ -115,7 +132,9 @@ class AnalyticEngine final : public Engine {
         pendulums_->extend_to(c.duration_s);
         if (const auto& fc = pendulums_->first_contact()) {
           handover_s_ = fc->time_s;
-          numeric_ = std::make_unique<internal::ConvergedReference>(c);
+          // the independent truth runs from t = 0 on its own (not handed the
+          // closed form's state); the converged reference likewise
+          numeric_ = std::make_unique<internal::NumericalTruth>(c);
         }
         break;
     }
@@ -206,12 +225,21 @@ class AnalyticEngine final : public Engine {
     if (numeric_) {
       j["numerical_truth"] = numeric_->description();
       j["numerical_from_s"] = handover_s_;
+      const std::string what =
+          numeric_->independent()
+              ? std::string(
+                    "the independent truth (core/independent, no code shared with the reference "
+                    "solver, the shared contact law or the adapters; its agreement with the "
+                    "converged reference under numerical_truth)")
+              : std::string(
+                    "the converged reference at exact geometry (the reference judged against "
+                    "itself, at settings tighter than the run it judges)");
       j["numerical_why"] =
           handover_s_ > 0.0
               ? "the closed form holds up to the first contact; through and after it the truth "
-                "is the converged reference at exact geometry (SPEC §3)"
-              : "the case has no closed form (truth = converged): the converged reference at "
-                "exact geometry is the truth over the whole run (SPEC §3)";
+                "is " + what + " (SPEC §3)"
+              : "the case has no closed form (truth = converged): the truth over the whole run "
+                "is " + what + " (SPEC §3)";
     }
     return j;
   }
@@ -224,11 +252,21 @@ class AnalyticEngine final : public Engine {
     p.contact_force_by = "closed form";
     p.contact_force = "the case's law solved in closed form (SPEC §3)";
     p.parameters = "the case's law as stated";
-    if (numeric_) {
+    if (numeric_ && numeric_->independent()) {
+      p.mode = handover_s_ > 0.0 ? "closed form, then independent integration"
+                                 : "independent integration";
+      p.collision +=
+          "; after the closed form: the independent truth's exact geometry "
+          "(support points, point-to-ellipse by bisection)";
+      p.contact_force +=
+          "; after it: the case's law written again from the paper's equations, "
+          "integrated by Boost.Odeint dopri5 at abs and rel 1e-12 with located "
+          "contact events";
+    } else if (numeric_) {
       p.mode = handover_s_ > 0.0 ? "closed form, then converged reference" : "converged reference";
       p.collision += "; after the closed form: the reference solver's exact geometry";
       p.contact_force += "; after it: the case's law integrated by the reference solver at "
-                         "rtol 1e-10";
+                         "rtol 1e-12 (the reference judged against itself)";
     }
     return p;
   }
@@ -255,7 +293,7 @@ class AnalyticEngine final : public Engine {
   std::unique_ptr<internal::BodyOnLine> body_;
   std::unique_ptr<internal::TwoDisksHeadOn> disks_;
   std::unique_ptr<internal::PendulumsUntilContact> pendulums_;
-  std::unique_ptr<internal::ConvergedReference> numeric_;
+  std::unique_ptr<internal::NumericalTruth> numeric_;
 };
 
 }  // namespace
