@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <new>
@@ -107,9 +108,12 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
     }
   };
   bool building = true;
+  long steps_before_start = 0;  // the library's steps during build (SPEC §5b)
   try {
+    const long library_steps = engine.library_steps_on_this_thread();
     engine.build(c, engine_overrides);
     building = false;
+    steps_before_start = engine.library_steps_on_this_thread() - library_steps;
     r.settings = engine.settings().to_json();
     for (int k = 0; k < n; ++k) {
       if (k > 0 && dense_left > 0) {
@@ -194,7 +198,9 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
   r.mapping["physics"] = physics_json(engine.physics());
   r.extra = engine.extra_attributes();
   if (!r.extra.is_object()) r.extra = nlohmann::json::object();
-  r.extra["steps_before_start"] = engine.steps_before_start();
+  // what the library stepped during build, whoever stepped it; never less
+  // than what the engine says it probed
+  r.extra["steps_before_start"] = std::max(steps_before_start, engine.steps_before_start());
   r.events = engine.episodes();
   r.steps = engine.steps();
   return r;

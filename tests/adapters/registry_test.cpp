@@ -9,6 +9,7 @@
 
 #include "planarbench/case_loader.hpp"
 #include "planarbench/engines.hpp"
+#include "planarbench/runner.hpp"
 
 namespace pb {
 namespace {
@@ -61,6 +62,72 @@ TEST(Registry, OracleModesAreNamedAndLookAhead) {
     EXPECT_GT(e->steps_before_start(), 7000) << name;
     EXPECT_TRUE(e->physics().foreknowledge) << name;
     EXPECT_EQ(e->physics().mode, "oracle") << name;
+  }
+}
+
+// A deliberately looking-ahead use of a real engine: before the run, it
+// builds a second engine of the same library and steps it through the case's
+// first `ahead_s` (what an oracle calibration or a peek at the first touch
+// does), then builds the engine that runs. Everything else is the real
+// engine's. Its own steps_before_start() says 0: only the library's counter,
+// read by run_engine around build, can see the look-ahead.
+class LookingAhead final : public Engine {
+ public:
+  LookingAhead(std::string name, double ahead_s)
+      : name_(std::move(name)), ahead_s_(ahead_s), inner_(make_engine(name_)) {}
+  std::string name() const override { return inner_->name(); }
+  std::string version() const override { return inner_->version(); }
+  Capability supports(const Case& c) const override { return inner_->supports(c); }
+  const SettingsBinder& settings() const override { return inner_->settings(); }
+  void build(const Case& c, const SettingsOverrides& o) override {
+    auto peek = make_engine(name_);
+    peek->build(c, o);
+    peek->advance_to(ahead_s_);
+    inner_->build(c, o);
+  }
+  void advance_to(double t_s) override { inner_->advance_to(t_s); }
+  double time() const override { return inner_->time(); }
+  void body_states(std::vector<BodyState>& out) const override { inner_->body_states(out); }
+  void contacts(std::vector<ContactSample>& out) const override { inner_->contacts(out); }
+  std::vector<ContactEpisode> episodes() const override { return inner_->episodes(); }
+  long steps() const override { return inner_->steps(); }
+  nlohmann::json mapping() const override { return inner_->mapping(); }
+  Physics physics() const override { return inner_->physics(); }
+  long library_steps_on_this_thread() const override {
+    return inner_->library_steps_on_this_thread();
+  }
+
+ private:
+  std::string name_;
+  double ahead_s_;
+  std::unique_ptr<Engine> inner_;
+};
+
+// The no-look-ahead guard fires for every engine: run as users run them, the
+// runner records steps_before_start = 0; looking 0.05 s ahead before the run
+// records the library's steps of that peek (a fixed step of 1e-4 s: 500 steps;
+// the reference's adaptive rk45 takes at least one), so a look-ahead cannot
+// pass unseen. Box2D's counter (b2World::Step) fires as well as the others.
+TEST(Registry, NoLookAheadGuardFiresForEveryEngine) {
+  Case c = load_case(std::string(PB_CASES_DIR) + "/falling_ball.toml");
+  c.duration_s = 0.1;  // s: the guard is about build; a short run keeps the test cheap
+  constexpr double kAhead_s = 0.05;
+  for (const std::string name : {"mujoco", "box2d", "ode", "reference"}) {
+    auto plain = make_engine(name);
+    const RunResult honest = run_engine(*plain, c, settings_of(c));
+    ASSERT_EQ(honest.status, RunStatus::ok) << name << ": " << honest.reason;
+    EXPECT_EQ(honest.extra.value("steps_before_start", -1L), 0) << name;
+    LookingAhead peeking(name, kAhead_s);
+    const RunResult peeked = run_engine(peeking, c, settings_of(c));
+    ASSERT_EQ(peeked.status, RunStatus::ok) << name << ": " << peeked.reason;
+    EXPECT_EQ(peeking.steps_before_start(), 0) << name << ": the wrapper reports nothing itself";
+    const long seen = peeked.extra.value("steps_before_start", -1L);
+    if (name == "reference") {
+      EXPECT_GT(seen, 0) << name;
+    } else {
+      // 0.05 s / 1e-4 s = 500 steps of the library's fixed step
+      EXPECT_EQ(seen, 500) << name;
+    }
   }
 }
 

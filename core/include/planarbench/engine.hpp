@@ -122,6 +122,13 @@ class Engine {
   // steps the engine's own integrator took during build, before t = 0 (a
   // probe or look-ahead run); 0 for every default mode (SPEC §5b)
   [[nodiscard]] virtual long steps_before_start() const { return 0; }
+  // every step the engine's library integrator has taken on this thread, by
+  // whoever asked for it (a thread-local counter per library: mj_Euler /
+  // mj_RungeKutta, b2World::Step, dWorldStep / dWorldQuickStep, the reference
+  // solver's accepted steps); 0 for the truth, which may look ahead. run_engine
+  // reads it around build: the no-look-ahead guard (SPEC §5b), which neither
+  // an engine's own bookkeeping nor a wrapper around it can hide.
+  [[nodiscard]] virtual long library_steps_on_this_thread() const { return 0; }
 
   // extra attributes for the results file (e.g. "valid_until_s")
   [[nodiscard]] virtual nlohmann::json extra_attributes() const { return nlohmann::json::object(); }

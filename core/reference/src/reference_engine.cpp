@@ -89,6 +89,9 @@ class ReferenceEngine final : public Engine {
   }
 
   [[nodiscard]] long steps() const override { return solver_ ? solver_->stats().steps : 0; }
+  [[nodiscard]] long library_steps_on_this_thread() const override {
+    return reference_steps_on_this_thread();
+  }
 
   [[nodiscard]] nlohmann::json mapping() const override {
     nlohmann::json m;

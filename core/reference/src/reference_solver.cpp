@@ -87,7 +87,12 @@ double golden_max(F&& f, double a, double b, double best) {
   return best;
 }
 
+// accepted steps of every solver on this thread (reference_steps_on_this_thread)
+thread_local long t_reference_steps = 0;
+
 }  // namespace
+
+long reference_steps_on_this_thread() { return t_reference_steps; }
 
 ReferenceSolver::ReferenceSolver(const Case& c, const ReferenceSettings& s)
     : sys_(c, parse_geometry(s.geometry), parse_detection(s.detection)),
@@ -370,6 +375,7 @@ void ReferenceSolver::accept(double h, std::optional<double> exact_end) {
   f_ = f1_;
   pairs_ = pairs1_;
   ++stats_.steps;
+  ++t_reference_steps;
   if (!y_.allFinite()) {
     throw EngineError(fmt::format("reference: non-finite state at t = {:.15g} s", t_));
   }

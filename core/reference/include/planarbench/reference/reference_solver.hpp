@@ -70,6 +70,10 @@ struct SolverStats {
   double constraint_drift_m = 0.0; // m, largest joint violation at the accepted steps
 };
 
+// every accepted step of every ReferenceSolver on this thread (the
+// no-look-ahead guard's trace, Engine::library_steps_on_this_thread)
+[[nodiscard]] long reference_steps_on_this_thread();
+
 class ReferenceSolver {
  public:
   // throws std::invalid_argument for a case or settings it cannot run
