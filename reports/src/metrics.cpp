@@ -64,12 +64,35 @@ MetricValue metric(const Case& c, const RunResult& run, const std::string& again
 }
 
 // trajectory metrics over every body the baseline has
+// why `run` does not cover `base`'s trajectories (issue 25): a body the
+// baseline has and the run lacks, or fewer rows of it than the baseline's
+// (both are sampled on the case's output grid); "" when it covers them
+std::string uncovered(const RunResult& run, const RunResult& base) {
+  for (const auto& bb : base.bodies) {
+    const BodyTrajectory* rb = find_body(run, bb.name);
+    if (rb == nullptr || rb->time_s.empty()) {
+      return "truncated: no samples of body '" + bb.name + "' in the run";
+    }
+    if (rb->time_s.size() < bb.time_s.size()) {
+      return "truncated: " + std::to_string(rb->time_s.size()) + " rows of body '" + bb.name +
+             "' (to t = " + std::to_string(rb->time_s.back()) + " s) against the baseline's " +
+             std::to_string(bb.time_s.size()) + " (to t = " +
+             std::to_string(bb.time_s.empty() ? 0.0 : bb.time_s.back()) + " s)";
+    }
+  }
+  return "";
+}
+
 void trajectory_metrics(const Case& c, const RunResult& run, const RunResult& base,
                         const std::string& against, double valid_until_s,
                         std::vector<MetricValue>& out) {
   double pos_max = 0.0, pos_sq = 0.0, vel_max = 0.0, vel_sq = 0.0, ang_max = 0.0;
   long n = 0;
   double t_last = 0.0;
+  // a run that stops early is not judged on its common prefix alone: an ok
+  // run's errors are then NaN (the gate fails them); a diverged run (failed
+  // by its status already) keeps its errors up to the divergence, noted
+  const std::string gap = uncovered(run, base);
   for (const auto& bb : base.bodies) {
     const BodyTrajectory* rb = find_body(run, bb.name);
     if (rb == nullptr || rb->time_s.empty()) continue;
@@ -96,19 +119,22 @@ void trajectory_metrics(const Case& c, const RunResult& run, const RunResult& ba
       ++n;
     }
   }
-  if (n == 0) return;
-  const std::string note =
+  if (n == 0 && gap.empty()) return;
+  std::string note =
       std::isfinite(valid_until_s) ? "compared up to t = " + std::to_string(t_last) + " s" : "";
+  const bool unjudged = !gap.empty() && run.status == RunStatus::ok;
+  if (!gap.empty()) note = gap + (note.empty() ? "" : "; " + note);
   auto add = [&](const char* name, double value, const char* unit) {
-    auto m = metric(c, run, against, name, value, 0.0, false, unit);
+    auto m = metric(c, run, against, name, unjudged || n == 0 ? kNaN : value, 0.0, false, unit);
     m.note = note;
     out.push_back(m);
   };
   add("position_max", pos_max, "m");
-  add("position_rms", std::sqrt(pos_sq / static_cast<double>(n)), "m");
+  const double count = std::max(1.0, static_cast<double>(n));
+  add("position_rms", std::sqrt(pos_sq / count), "m");
   add("angle_max", ang_max, "rad");
   add("velocity_max", vel_max, "m/s");
-  add("velocity_rms", std::sqrt(vel_sq / static_cast<double>(n)), "m/s");
+  add("velocity_rms", std::sqrt(vel_sq / count), "m/s");
 }
 
 using PairKey = std::pair<std::string, std::string>;
@@ -128,7 +154,11 @@ std::map<PairKey, std::vector<ContactEpisode>> episodes_by_pair(const RunResult&
   return out;
 }
 
-// per-episode metrics, episodes matched in order per body pair
+// per-episode metrics, episodes matched in order per body pair (k-th with
+// k-th): a baseline episode the run lacks gets every metric its baseline
+// value exists for, with the run's value NaN (the gate fails it); an extra
+// episode of the run has no baseline value to compare with and shows in
+// episode_count only (issue 25)
 void episode_metrics(const Case& c, const RunResult& run, const RunResult& base,
                      const std::string& against, double valid_until_s,
                      std::vector<MetricValue>& out) {
@@ -150,16 +180,24 @@ void episode_metrics(const Case& c, const RunResult& run, const RunResult& base,
                               : re.size() > be.size() ? ": extra episodes in the run"
                                                       : "");
     out.push_back(count);
-    for (std::size_t k = 0; k < std::min(re.size(), be.size()); ++k) {
-      const ContactEpisode& a = re[k];
+    ContactEpisode lost;  // stands in for a baseline episode the run lacks
+    lost.onset_time_s = lost.offset_time_s = lost.restitution = lost.peak_force_n =
+        lost.impulse_ns = lost.max_penetration_m = kNaN;
+    for (std::size_t k = 0; k < be.size(); ++k) {
+      const bool missing = k >= re.size();
+      const ContactEpisode& a = missing ? lost : re[k];
       const ContactEpisode& d = be[k];
+      // no baseline value (an episode still open at the end has no offset,
+      // duration or restitution): nothing to compare; a run's NaN or inf
+      // against a finite baseline value is kept, and fails its threshold
       auto add = [&](const char* name, double actual, double desired, bool relative,
                      const char* unit) {
-        if (!std::isfinite(actual) || !std::isfinite(desired)) return;
+        if (!std::isfinite(desired)) return;
         if (relative && desired == 0.0) return;
-        auto m = metric(c, run, against, name, actual, desired, relative, unit);
+        auto m = metric(c, run, against, name, std::isfinite(actual) ? actual : kNaN, desired,
+                        relative, unit);
         m.episode = static_cast<int>(k);
-        m.note = pair_name;
+        m.note = pair_name + (missing ? ": episode missing in the run" : "");
         out.push_back(m);
       };
       add("impact_time", a.onset_time_s, d.onset_time_s, false, "s");

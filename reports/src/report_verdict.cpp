@@ -34,13 +34,28 @@ const char* truth_text(TruthKind t) {
     case TruthKind::analytic:
       return "closed form";
     case TruthKind::analytic_until_first_contact:
-      return "closed form, then converged reference";
+      return "closed form, then numerical";
     case TruthKind::converged:
-      return "converged reference";
+      return "numerical (no closed form)";
     case TruthKind::none:
       break;
   }
   return "none: vs the reference";
+}
+
+// what the truth run was, from its own mapping (physics.mode: "closed form",
+// "converged reference", "closed form, then independent integrator" ...); the
+// case's truth kind when the file has no truth run
+std::string truth_source(const CaseRuns& cr, const Case& c) {
+  for (const auto& r : cr.runs) {
+    if (r.engine_name != "analytic" || r.status != RunStatus::ok) continue;
+    const auto p = r.mapping.find("physics");
+    if (p != r.mapping.end() && p->is_object() && p->contains("mode") &&
+        (*p)["mode"].is_string()) {
+      return (*p)["mode"].get<std::string>();
+    }
+  }
+  return truth_text(c.truth);
 }
 
 // two significant digits: a ranking, not a measurement report
@@ -180,9 +195,16 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
       if (!e.time_to_target.empty()) all += ", " + e.time_to_target;
       all += ")";
     }
+    const std::string truth = against == "truth" ? truth_source(cr, c) : truth_text(c.truth);
     if (against == "reference") {
       caveats.push_back(
           "no truth: the reference is the yardstick, and its own error is not measured here");
+    } else if (truth.find("converged reference") != std::string::npos) {
+      // issue 25: say it in words where the ranking could be misread
+      caveats.push_back(
+          "the truth is the reference solver itself (exact geometry, rk45 at rtol 1e-12): the "
+          "reference is judged against itself, so its error here measures its convergence, not "
+          "its correctness");
     }
     for (const auto& o : outcomes) {
       if (o.threshold.case_name != cr.case_name || o.passed) continue;
@@ -199,7 +221,7 @@ Table verdict_table(const ResultsFile& results, const std::vector<Case>& cases,
     }
     std::string caveat_text;
     for (const auto& k : caveats) caveat_text += (caveat_text.empty() ? "" : "; ") + k;
-    t.rows.push_back({cr.case_name, truth_text(c.truth), best_text, all, caveat_text});
+    t.rows.push_back({cr.case_name, truth, best_text, all, caveat_text});
     t.row_status.push_back(invalid.empty() ? "" : "fail");
   }
   return t;

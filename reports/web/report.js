@@ -247,6 +247,12 @@
       return;
     }
     const { u, fullRange, view, clip, order } = makeChart(fig, chartDiv);
+    // redraws of the figure, counted: the browser test waits for the next
+    // one after a zoom, not for a fixed time
+    box.dataset.draws = '0';
+    (u.hooks.draw = u.hooks.draw || []).push(() => {
+      box.dataset.draws = String(Number(box.dataset.draws) + 1);
+    });
     const errorDiv = el('div', { class: 'chart error-panel' });
     box.insertBefore(errorDiv, chartDiv.nextSibling);
     const errorChart = makeErrorChart(fig, errorDiv, u);
@@ -551,7 +557,12 @@
   for (const t of data.tables) renderTable(t, main);
   if (data.results_file) renderMappings(main);
 
+  // the charts follow the window's width 150 ms after its last resize; each
+  // such redraw is counted on <html data-resizes>: the browser test waits on
+  // the count, not on a fixed time
   let resizeTimer = null;
+  let resizes = 0;
+  document.documentElement.dataset.resizes = '0';
   window.addEventListener('resize', () => {
     clearTimeout(resizeTimer);
     resizeTimer = setTimeout(() => {
@@ -559,6 +570,7 @@
         if (c.uplot) c.uplot.setSize({ width: chartWidth(c.uplot.root.parentNode), height: 320 });
         if (c.errorUplot) c.errorUplot.setSize({ width: chartWidth(c.errorUplot.root.parentNode), height: 170 });
       }
+      document.documentElement.dataset.resizes = String(++resizes);
     }, 150);
   });
 

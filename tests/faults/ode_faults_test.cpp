@@ -67,8 +67,14 @@ TEST(OdeFaults, LongFreeFallIsNotABlowUp) {
   o.set("dt", "1e-2", SettingSource{"--set", 0});
   const RunResult r = run_engine(*e, c, o);
   ASSERT_EQ(r.status, RunStatus::ok) << r.reason;
-  // 1e-3 relative: semi-implicit Euler leads the parabola by g h t / 2 = 0.1 % of it
-  EXPECT_NEAR(-r.bodies.at(0).position_m.back().y(), 0.5 * 9.8066 * 500.0 * 500.0, 1e-3 * 1.226e6);
+  // semi-implicit Euler (v += g h, then x += v h) from rest falls exactly
+  // g h^2 n (n + 1) / 2 = g t (t + h) / 2 after n = t / h steps: the parabola
+  // g t^2 / 2 = 1.226e6 m plus a lead of g h t / 2 = 24.5 m (h / t = 2e-5 of
+  // it). Against that discrete fall, only rounding is left: 5e4 steps, each
+  // adding one rounding of ~1.1e-16 relative to x, 5e4 x 1.1e-16 = 5.5e-12
+  // of x; band 1e-9 of x (1.2e-3 m), 180x that
+  const double g = 9.8066, t = 500.0, h = 1e-2;
+  EXPECT_NEAR(-r.bodies.at(0).position_m.back().y(), 0.5 * g * t * (t + h), 1e-9 * 1.226e6);
 }
 
 // An infinite stiffness (a Case built in code: the loader refuses inf)

@@ -157,6 +157,28 @@ const okEngines = Object.keys(statuses).filter((e) => statuses[e] === 'ok');
 console.log('run statuses: ' + JSON.stringify(statuses));
 check(okEngines.length > 0, 'at least one engine ran falling_ball ok');
 
+// ---- waiting on conditions, not on time ---------------------------------------
+// Every wait is for something the page publishes, with a generous overall
+// limit (a busy machine is slow, not wrong): WAIT_MS, then the check fails.
+const WAIT_MS = 60000;
+// one painted frame after the page's last change (two rAF callbacks: the
+// second runs after the first frame's paint)
+async function painted(page) {
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+}
+// sets the viewport and waits for the charts' resize redraw (report.js counts
+// them on <html data-resizes>, 150 ms after the last resize event) and a frame
+async function resizeTo(page, width, height) {
+  const [w, h, before] = await page.evaluate(() => [window.innerWidth, window.innerHeight,
+    Number(document.documentElement.dataset.resizes || 0)]);
+  await page.setViewportSize({ width, height });
+  if (w !== width || h !== height) {
+    await page.waitForFunction((n) => Number(document.documentElement.dataset.resizes || 0) > n,
+      before, { timeout: WAIT_MS });
+  }
+  await painted(page);
+}
+
 // ---- open the page in headless Chromium -------------------------------------
 const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'pb-chromium-'));
 let context;
@@ -264,9 +286,9 @@ try {
 
   // the first screen at a laptop's and a phone's size
   for (const [width, height] of [[1440, 900], [390, 844]]) {
-    await page.setViewportSize({ width, height });
+    await resizeTo(page, width, height);
     await page.evaluate(() => window.scrollTo(0, 0));
-    await page.waitForTimeout(400);  // the charts' resize handler waits 150 ms
+    await painted(page);
     const size = `${width}x${height}`;
     const layout = await page.evaluate(() => {
       const v = document.getElementById('table-verdict');
@@ -322,7 +344,7 @@ try {
       }
     }
   }
-  await page.setViewportSize({ width: 1280, height: 900 });
+  await resizeTo(page, 1280, 900);
 
   // the force figure, whole and zoomed into the first contact episode
   const figure = page.locator('#fig-falling_ball_fig5');
@@ -335,8 +357,12 @@ try {
   const zoom = figure.getByRole('button', { name: 'zoom to episode 0' });
   check(await zoom.count() === 1, 'Fig. 5 has a "zoom to episode 0" button');
   if (await zoom.count() === 1) {
+    // the zoom redraws the figure (report.js counts its draws on data-draws)
+    const draws = Number(await figure.getAttribute('data-draws'));
     await zoom.click();
-    await page.waitForTimeout(200);
+    await page.waitForFunction((n) => Number(document.getElementById('fig-falling_ball_fig5').dataset.draws) > n,
+      draws, { timeout: WAIT_MS });
+    await painted(page);
     const zpng = path.join(path.dirname(work), 'falling_ball_fig5_episode0.png');
     await figure.screenshot({ path: zpng });
     check(fs.statSync(zpng).size > 10000, `screenshot ${zpng}`);
@@ -350,8 +376,7 @@ try {
   const tables = await page.locator('#campaign table').count();
   check(tables >= 3, `campaign page has its tables (runs, against dt, spread): ${tables}`);
   for (const [width, height] of [[1440, 900], [390, 844]]) {
-    await page.setViewportSize({ width, height });
-    await page.waitForTimeout(200);
+    await resizeTo(page, width, height);
     const w = await page.evaluate(() => [document.documentElement.scrollWidth, window.innerWidth]);
     check(w[0] <= w[1], `campaign page ${width}x${height}: no horizontal overflow (${w[0]} px in ${w[1]} px)`);
   }

@@ -40,8 +40,17 @@ struct MetricValue {
 // the run's samples, deduplicated by time (an engine with a step coarser than
 // the grid repeats its last state), are linearly interpolated onto the
 // baseline's sample times inside the run's time span; samples of the baseline
-// after `valid_until_s` are left out. Episodes are matched in order per body
-// pair; a missing or extra episode is reported as metric "episode_count".
+// after `valid_until_s` are left out. A run with fewer rows of a body than
+// the baseline, or none, is "truncated" (noted): an ok run's trajectory
+// errors are then NaN, never those of the common prefix; a diverged run
+// keeps its errors up to the divergence (issue 25). Episodes are matched in
+// order per body pair (the run's k-th with the baseline's k-th); the counts
+// are metric "episode_count" (noted when episodes are missing or extra); a
+// baseline episode the run lacks gets each metric its baseline value exists
+// for with the run's value NaN, so its thresholds fail; an extra episode of
+// the run has nothing to be compared with and shows in episode_count alone.
+// A run's NaN or inf episode value against a finite baseline one is kept as
+// NaN (fails); a baseline value that is not finite gives no metric.
 // A NaN sample makes a maximum (position_max, velocity_max, angle_max, the
 // drifts) NaN, never skipped (issue 24; run_validity.hpp names such runs).
 [[nodiscard]] std::vector<MetricValue> compare_runs(const Case& c, const RunResult& run,
