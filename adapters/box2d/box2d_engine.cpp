@@ -94,6 +94,7 @@ class Box2dEngine final : public Engine {
   [[nodiscard]] nlohmann::json extra_attributes() const override;
   [[nodiscard]] Physics physics() const override;
   [[nodiscard]] long steps_before_start() const override { return steps_before_start_; }
+  [[nodiscard]] long library_steps_on_this_thread() const override { return t_world_steps; }
 
  private:
   [[nodiscard]] bool inject() const { return settings_.mode == "inject"; }
@@ -422,7 +423,9 @@ void Box2dEngine::map_pairs() {
       pj["restitution_used"] =
           "set in b2ContactListener::PreSolve when a contact of the pair begins (its first "
           "PreSolve), from the state Box2D has then: the pair's touching manifold points as one "
-          "contact at their depth-weighted centroid (SPEC §1; a face landing flat: its middle), "
+          "contact at the depth-weighted centroid of their region, the depth-weighted mean of "
+          "its two end points along the surface (SPEC §1; a face landing flat: its middle, "
+          "however the body's convex pieces split it; a vertex two pieces share: that vertex), "
           "its effective mass 1 / (J M^-1 J^T) along the deepest point's normal, and the largest "
           "normal approach speed among the points; set on every touching contact of the pair; "
           "listed in onsets";
@@ -776,8 +779,8 @@ Physics Box2dEngine::physics() const {
   p.contact_force = "Box2D's rigid contact solver (sequential impulses with restitution)";
   p.parameters =
       "each contact's restitution set as it begins (b2ContactListener::PreSolve) from the law at "
-      "the approach speed and the effective mass at the depth-weighted centroid of the pair's "
-      "touching manifold points then (the law alone for Hertz and Lankarani-Nikravesh, whose "
+      "the approach speed and the effective mass at the depth-weighted centroid of the region of "
+      "the pair's touching manifold points then (the law alone for Hertz and Lankarani-Nikravesh, whose "
       "restitution is scale-free)";
   return p;
 }

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "box2d_frame.hpp"
 #include "planarbench/convex_pieces.hpp"
@@ -129,6 +130,114 @@ std::vector<Vec2> inset_outline(const std::vector<Vec2>& outline, double r_m) {
   return out;
 }
 
+namespace {
+
+// m, distance from p to the segment a-b
+double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (p - (a + t * ab)).norm();
+}
+
+// whether p lies inside the closed counter-clockwise polygon (even-odd rule)
+bool inside(const std::vector<Vec2>& polygon, const Vec2& p) {
+  bool in = false;
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Vec2& a = polygon[i];
+    const Vec2& b = polygon[j];
+    if ((a.y() > p.y()) != (b.y() > p.y()) &&
+        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x()) {
+      in = !in;
+    }
+  }
+  return in;
+}
+
+// m, the least distance from the segment a-b to the polygon's outline, 0 when
+// the segment leaves the polygon
+double clearance_m(const std::vector<Vec2>& polygon, const Vec2& a, const Vec2& b) {
+  if (!inside(polygon, a) || !inside(polygon, b)) return 0.0;
+  double least = std::numeric_limits<double>::infinity();
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& p = polygon[i];
+    const Vec2& q = polygon[(i + 1) % n];
+    // two segments inside one another's clearance: the least of the four
+    // end-to-segment distances (they cannot cross: both ends lie inside)
+    least = std::min({least, point_segment_distance(a, p, q), point_segment_distance(b, p, q),
+                      point_segment_distance(p, a, b), point_segment_distance(q, a, b)});
+  }
+  return least;
+}
+
+}  // namespace
+
+std::optional<std::vector<Vec2>> inset_piece(const std::vector<Vec2>& piece,
+                                             const std::vector<Vec2>& polygon, double r_m) {
+  const std::size_t np = polygon.size();
+  // the half-planes n . x <= n . p - r of the polygon's edges that bound the
+  // piece: the piece's own outline edges, and at each convex polygon corner
+  // of the piece where a seam ends, the polygon's edges on both sides of it
+  // (the one of the neighbouring piece too: the corner is the body's)
+  std::vector<std::size_t> edges;  // polygon edge k: polygon[k] -> polygon[k + 1]
+  for (const Vec2& p : piece) {
+    // the partition's points are the polygon's own doubles (convex_pieces.hpp)
+    const auto at = std::find(polygon.begin(), polygon.end(), p);
+    if (at == polygon.end()) return std::nullopt;
+    const auto k = static_cast<std::size_t>(at - polygon.begin());
+    const std::size_t before = (k + np - 1) % np;
+    if (left_turn(polygon[before], polygon[k], polygon[(k + 1) % np])) {
+      edges.push_back(before);
+      edges.push_back(k);
+    } else {
+      // a reflex corner: only the piece's own outline edges there
+      const Vec2& next = piece[(static_cast<std::size_t>(&p - piece.data()) + 1) % piece.size()];
+      const Vec2& prev =
+          piece[(static_cast<std::size_t>(&p - piece.data()) + piece.size() - 1) % piece.size()];
+      if (next == polygon[(k + 1) % np]) edges.push_back(k);
+      if (prev == polygon[before]) edges.push_back(before);
+    }
+  }
+  // the piece clipped by each half-plane (Sutherland-Hodgman on a convex
+  // polygon: the result is their intersection, convex); its seams need no
+  // clipping, the piece lies on its side of them
+  double size = 0.0;  // m
+  for (const Vec2& p : polygon) size = std::max(size, p.norm());
+  // m: a point this close to a clipping line lies on it (two lines through
+  // one corner, as at a corner the seam bisects, must give one vertex, not
+  // two a rounding apart): 1e-12 of the body, far above the rounding of its
+  // coordinates (1e-16 relative), far below Box2D's weld distance
+  const double on_line = 1e-12 * size;
+  std::vector<Vec2> core = piece;
+  for (const std::size_t k : edges) {
+    const Vec2 n = outward_normal(polygon[k], polygon[(k + 1) % np]);
+    const double c = n.dot(polygon[k]) - r_m;
+    std::vector<Vec2> kept;
+    for (std::size_t i = 0; i < core.size(); ++i) {
+      const Vec2& a = core[i];
+      const Vec2& b = core[(i + 1) % core.size()];
+      const double da = n.dot(a) - c;  // > 0: outside
+      const double db = n.dot(b) - c;
+      if (da <= on_line) kept.push_back(a);
+      if ((da < -on_line && db > on_line) || (da > on_line && db < -on_line)) {
+        kept.push_back(a + (da / (da - db)) * (b - a));
+      }
+    }
+    core = std::move(kept);
+    if (core.size() < 3) return std::nullopt;
+  }
+  // the skinned core must stay inside the outline: every core edge at least r
+  // from it (1e-9 relative: the offset edges lie at r exactly, up to rounding)
+  for (std::size_t i = 0; i < core.size(); ++i) {
+    if (clearance_m(polygon, core[i], core[(i + 1) % core.size()]) < r_m * (1.0 - 1e-9)) {
+      return std::nullopt;
+    }
+  }
+  return core;
+}
+
 bool is_convex_ccw(const std::vector<Vec2>& polygon) {
   const std::size_t n = polygon.size();
   if (n < 3) return false;
@@ -186,8 +295,8 @@ namespace {
 // is made: a convex outline inset by the skin and cut into a fan around the
 // body origin (centre + up to kFanOutlineVertices outline points per piece);
 // a non-convex polygon cut by CGAL into convex pieces of at most
-// b2_maxPolygonVertices points (planarbench/convex_pieces.hpp), each inset by
-// the skin. `error` says why Box2D cannot take it.
+// b2_maxPolygonVertices points (planarbench/convex_pieces.hpp), each clipped
+// by the polygon's edges moved in by the skin (inset_piece). `error` says why Box2D cannot take it.
 struct BodyPieces {
   std::vector<std::vector<Vec2>> pieces;
   std::string how;
@@ -215,8 +324,17 @@ BodyPieces body_pieces(const Body& body) {
     return out;
   }
   const ConvexDecomposition parts = convex_pieces(polygon->points_m, b2_maxPolygonVertices);
+  int whole = 0;  // pieces inset on every edge (their seams too)
   for (std::size_t k = 0; k < parts.pieces.size(); ++k) {
-    std::vector<Vec2> inset = inset_outline(parts.pieces[k], skin);
+    // the piece clipped by the outline's edges moved in by the skin
+    // (inset_piece); where that fails, the piece inset on its own
+    std::optional<std::vector<Vec2>> core = inset_piece(parts.pieces[k], polygon->points_m, skin);
+    if (!core || !is_convex_ccw(*core) ||
+        static_cast<int>(core->size()) > b2_maxPolygonVertices) {
+      core = inset_outline(parts.pieces[k], skin);
+      ++whole;
+    }
+    std::vector<Vec2> inset = std::move(*core);
     if (!is_convex_ccw(inset)) {
       out.error = fmt::format(
           "body '{}': convex piece {} of the non-convex polygon is thinner than Box2D's skin "
@@ -229,9 +347,13 @@ BodyPieces body_pieces(const Body& body) {
   }
   out.how = fmt::format(
       "{} convex b2PolygonShape pieces of the non-convex {}-point polygon ({}; at most "
-      "b2_maxPolygonVertices = {} points each), each inset by the skin {} m so that the skinned "
-      "pieces have the polygon's edges",
-      out.pieces.size(), polygon->points_m.size(), parts.method, b2_maxPolygonVertices, skin);
+      "b2_maxPolygonVertices = {} points each), each piece clipped by the polygon's edges "
+      "moved in by the skin {} m (its own, and both edges at a convex corner it shares), its "
+      "seams kept, so that the skinned pieces have the polygon's edges, its reflex corners sharp "
+      "and a corner two pieces share rounded as a convex corner is, by r (1/cos(phi/2) - 1) (phi its turning angle), not as each piece's sharper corner; "
+      "{} of the pieces inset on their own instead (a seam's skin would leave the outline)",
+      out.pieces.size(), polygon->points_m.size(), parts.method, b2_maxPolygonVertices, skin,
+      whole);
   return out;
 }
 

@@ -56,7 +56,7 @@ struct PairState {
 struct OnsetRecord {
   double time_s = 0.0;  // s, start of the step in which the contact began
   int pair = -1;
-  double m_eff_kg = 0.0;      // kg, at the depth-weighted centroid of the pair's manifold points
+  double m_eff_kg = 0.0;      // kg, at the depth-weighted centroid of the pair's contact region
   int points = 0;             // those points
   double approach_mps = 0.0;  // m/s, normal approach speed at that point
   double restitution = 0.0;
@@ -67,7 +67,8 @@ struct OnsetRecord {
 // max-mixing of fixture values never applies), from the state Box2D has then:
 // the pair's touching manifold points (every touching contact of the two
 // bodies: a face on a face, the pieces of a concave body) are one contact
-// at their depth-weighted centroid (SPEC §1), whose effective mass
+// at the depth-weighted centroid of their region (SPEC §1: the depth-weighted
+// mean of its two end points along the surface), whose effective mass
 // 1 / (J M^-1 J^T) along the deepest point's normal and the largest normal
 // approach speed among the points give the law's restitution; the value
 // goes to every touching contact of the pair. Sums the solver's normal

@@ -91,6 +91,9 @@ class MujocoEngine final : public Engine {
   nlohmann::json extra_attributes() const override;
   Physics physics() const override;
   long steps_before_start() const override { return probe_steps_; }
+  [[nodiscard]] long library_steps_on_this_thread() const override {
+    return integrations_on_this_thread();
+  }
 
  private:
   MjcfOptions base_options() const;
@@ -249,7 +252,9 @@ nlohmann::json MujocoEngine::native_pair_json(std::size_t k) const {
       "pair's pressed contacts from MuJoCo's mj_jac and mj_solveM (one contact: "
       "1 / (J M^-1 J^T)); sigma = delta / delta_w, delta_w = w^T r / m_set, w = A^+ 1, so that "
       "the rows' springs sum to k delta (SPEC §1, one force per pair) and their dampers to c "
-      "times the rows' w-weighted mean normal speed";
+      "times the rows' w-weighted mean normal speed; before it, a contact that two convex "
+      "pieces of one body report at one point (a vertex they share) is fused into the first "
+      "(exclude = 2, MuJoCo's flag for a fused contact): one row per point";
   if (const auto* kv = std::get_if<KelvinVoigt>(&law)) {
     j["law_as_spring_damper"] =
         kv->damping_depth_m > 0.0
@@ -583,8 +588,11 @@ nlohmann::json MujocoEngine::mapping() const {
   if (rule_ && m.is_object()) {
     m["solref_rule_seen"] = {
         {"what", "over this run: the most pressed contacts of one pair in one step, and the "
-                 "largest spread factor sigma = delta / delta_w the rule applied"},
+                 "largest spread factor sigma = delta / delta_w the rule applied, and the most "
+                 "contacts fused into another in one step (a vertex two convex pieces share, "
+                 "reported by both: one contact, exclude = 2)"},
         {"most_rows", rule_->most_rows()},
+        {"most_fused", rule_->most_fused()},
         {"largest_sigma", rule_->largest_scale()}};
   }
   for (std::size_t k = 0; k < depth_.size() && m.contains("pairs"); ++k) {

@@ -73,7 +73,8 @@ void observe_pairs(const mjModel* m, const mjData* d, const ModelLayout& layout,
   for (int i = 0; i < d->ncon; ++i) {
     const mjContact& con = d->contact[i];
     const int k = layout.pair_of(con.geom1, con.geom2);
-    if (k < 0) continue;
+    // a contact fused into another (a vertex two pieces share) is not a contact
+    if (k < 0 || con.exclude == 2) continue;
     PairObservation& o = out[static_cast<std::size_t>(k)];
     ++o.contacts;
     if (con.dist < 0.0) ++o.pressed;
@@ -106,7 +107,10 @@ void observe_pairs(const mjModel* m, const mjData* d, const ModelLayout& layout,
       Vec2 moment = Vec2::Zero();  // m^2
       for (int i = 0; i < d->ncon; ++i) {
         const mjContact& c = d->contact[i];
-        if (c.dist >= 0.0 || layout.pair_of(c.geom1, c.geom2) != static_cast<int>(k)) continue;
+        if (c.dist >= 0.0 || c.exclude == 2 ||
+            layout.pair_of(c.geom1, c.geom2) != static_cast<int>(k)) {
+          continue;
+        }
         w -= c.dist;
         moment -= c.dist * from_mj(c.pos);
       }

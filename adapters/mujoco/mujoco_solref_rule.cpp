@@ -7,6 +7,7 @@
 #include <span>
 
 #include "mujoco_frame.hpp"
+#include "mujoco_shared_vertex.hpp"
 #include "planarbench/contact_force.hpp"
 
 namespace pb::internal::mujoco {
@@ -33,6 +34,8 @@ void SolrefRule::hook(void* self, const mjModel* m, mjData* d) {
 
 void SolrefRule::apply(const mjModel* m, mjData* d) {
   const auto nv = static_cast<std::size_t>(m->nv);
+  // a vertex two convex pieces share is one contact (mujoco_shared_vertex.hpp)
+  fused_ = std::max(fused_, fuse_shared_vertex_contacts(d, layout_));
   for (std::size_t k = 0; k < layout_.pairs.size(); ++k) {
     const PairLayout& p = layout_.pairs[k];
     if (!p.present) continue;
@@ -40,7 +43,8 @@ void SolrefRule::apply(const mjModel* m, mjData* d) {
     rows_.clear();
     for (int i = 0; i < d->ncon; ++i) {
       const mjContact& c = d->contact[i];
-      if (c.dist < 0.0 && layout_.pair_of(c.geom1, c.geom2) == static_cast<int>(k)) {
+      if (c.dist < 0.0 && c.exclude == 0 &&
+          layout_.pair_of(c.geom1, c.geom2) == static_cast<int>(k)) {
         rows_.push_back(i);
       }
     }

@@ -25,6 +25,8 @@
 //     rows' mean normal speed (weighted by w = A^+ 1), and a uniform
 //     penetration gives the law's force with every contact point
 //     accelerated alike.
+// Before that, a contact repeated at one point by two convex pieces of one
+// body is fused into the first (mujoco_shared_vertex.hpp): one row a point.
 // Nothing is taken from the future: the rule sees the state the step starts
 // from, as a user's code between mj_collision and mj_makeConstraint would.
 #pragma once
@@ -60,6 +62,9 @@ class SolrefRule {
   // the largest sigma and the most pressed contacts of one pair seen so far
   [[nodiscard]] double largest_scale() const { return largest_scale_; }
   [[nodiscard]] int most_rows() const { return most_rows_; }
+  // the most contacts fused into another in one evaluation (a vertex shared
+  // by two convex pieces, mujoco_shared_vertex.hpp)
+  [[nodiscard]] int most_fused() const { return fused_; }
 
  private:
   void apply(const mjModel* m, mjData* d);
@@ -75,6 +80,7 @@ class SolrefRule {
   std::vector<Last> last_;
   double largest_scale_ = 1.0;
   int most_rows_ = 0;
+  int fused_ = 0;
 };
 
 }  // namespace pb::internal::mujoco

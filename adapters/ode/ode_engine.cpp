@@ -150,6 +150,9 @@ class OdeEngine final : public Engine {
   [[nodiscard]] nlohmann::json extra_attributes() const override;
   [[nodiscard]] Physics physics() const override;
   [[nodiscard]] long steps_before_start() const override { return probe_steps_; }
+  [[nodiscard]] long library_steps_on_this_thread() const override {
+    return internal::ode::world_steps_on_this_thread();
+  }
 
  private:
   void map_contacts_oracle(const std::vector<FirstTouch>& touches);
@@ -625,8 +628,9 @@ void OdeEngine::map_contacts_native() {
   mapping_["contacts"] = pairs;
   mapping_["collision"] =
       "dSimpleSpace + dSpaceCollide; the near callback keeps the case's contact pairs only and "
-      "calls dCollide on each pair of their geoms (convex pieces); every contact is kept (a "
-      "prism reports each vertex on both faces: the spread over the depths accounts for it)";
+      "calls dCollide on each pair of their geoms (convex pieces); one contact is kept per "
+      "point of the plane (a prism reports each vertex on both faces, and a vertex two convex "
+      "pieces share once per piece: ode_pair_contact.cpp), the law spread over their depths";
   add_common_mapping();
   extra_ = {{"step_s", step_s_},
             {"substeps", substeps_},

@@ -35,12 +35,19 @@ Vec2 point_velocity(dBodyID b, const Vec2& p) {
 }
 
 // Whether contact c lies (in the plane) where one already kept does: a prism
-// reports each vertex on both faces, z = +w and z = -w. With friction only one
-// of them is kept: their friction rows would be the same row twice, hard (no
-// soft CFM), which makes dWorldStep's LCP singular (measured on block_hold:
-// "LCP internal error, s <= 0" at 1784 steps, and a creep of 1.8e-5 m/s).
-// The normal law is spread over the contacts kept, so the pair's force is the
-// same. 1e-9 m: far below a prism's smallest edge, far above rounding.
+// reports each vertex on both faces, z = +w and z = -w, and a vertex where a
+// seam of a concave polygon's decomposition ends is a vertex of two prisms
+// (the L's outer corner, concave_corner; the boot's heel, concave_seam_face).
+// One contact is kept per point. With friction a repeat would be the same
+// friction row twice, hard (no soft CFM), which makes dWorldStep's LCP
+// singular (measured on block_hold: "LCP internal error, s <= 0" at 1784
+// steps, and a creep of 1.8e-5 m/s). Without it the law's spread over the
+// depths (spread_law) would count a shared vertex twice and every other
+// vertex once: on concave_seam_face the heel then carried 2/3 of a uniform
+// penetration's force instead of 1/2, and the boot turned (3.5 rad, a
+// restitution of 1.7). The normal law is spread over the contacts kept, so
+// the pair's force is the same. 1e-9 m: far below a prism's smallest edge,
+// far above rounding.
 bool in_plane_duplicate(const PairContact& out, const dContactGeom& c) {
   for (int k = 0; k < out.count; ++k) {
     const dContactGeom& d = out.geoms[static_cast<std::size_t>(k)];
@@ -138,7 +145,7 @@ void PairCollider::collide_geoms(int pair, dGeomID g, dGeomID h, PairContact& ou
     if (!(len > 0.0)) continue;  // a normal along z: not a planar contact
     c.normal[0] /= len;
     c.normal[1] /= len;
-    if (cp.has_friction() && in_plane_duplicate(out, c)) continue;
+    if (in_plane_duplicate(out, c)) continue;
     if (out.count >= capacity_) {
       throw EngineError(fmt::format(
           "ode: pair '{}' has more than {} contacts in one step, the bound 2 (V_a + V_b) + {} "

@@ -259,7 +259,8 @@ TEST(ResolveCases, AllGivesEveryCaseFileSorted) {
   std::vector<std::string> names;
   for (const auto& p : paths) names.push_back(p.stem().string());
   EXPECT_EQ(names, (std::vector<std::string>{
-                       "block_hold", "block_slide", "block_stop", "concave_arch", "disk_backspin",
+                       "block_hold", "block_slide", "block_stop", "concave_arch", "concave_corner",
+                       "concave_seam_face", "disk_backspin",
                        "disk_oblique_roll", "disk_oblique_slide", "disk_roll", "disk_slip",
                        "disk_throw", "dual_pendulum", "ellipse_incline", "falling_ball",
                        "falling_ball_paper", "head_on", "incline_launch", "pendulum_wall",
@@ -288,7 +289,8 @@ TEST(ResolveCases, UnknownNameListsTheCases) {
   } catch (const InputError& e) {
     const std::string msg = e.what();
     EXPECT_EQ(e.field(), "slidng");
-    EXPECT_NE(msg.find("block_hold, block_slide, block_stop, concave_arch, disk_backspin, "
+    EXPECT_NE(msg.find("block_hold, block_slide, block_stop, concave_arch, concave_corner, "
+                       "concave_seam_face, disk_backspin, "
                        "disk_oblique_roll, disk_oblique_slide, disk_roll, disk_slip, disk_throw, "
                        "dual_pendulum, ellipse_incline, falling_ball, falling_ball_paper, "
                        "head_on, incline_launch, pendulum_wall, sliding, sliding_friction, "

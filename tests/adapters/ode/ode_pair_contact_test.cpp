@@ -122,10 +122,11 @@ TEST(OdePairContact, SphereConvexDepthMatchesThePolygon) {
 
 // An ellipse turned 30 deg, centre 0.4 m above the ground: several of its
 // outline vertices are below the ground (found here from the outline
-// itself). The prism reports each on both of its faces (z = -w and +w); the
-// pair's contact (SPEC §1) has the deepest vertex's depth, the normal up, and
-// the depth-weighted centroid of the contacts' points, each midway between a
-// vertex and the ground surface above it (both faces weigh alike). A
+// itself). The prism reports each on both of its faces (z = -w and +w), and
+// the collider keeps one contact per in-plane point; the pair's contact
+// (SPEC §1) has the deepest vertex's depth, the normal up, and the
+// depth-weighted centroid of the contacts' points, each midway between a
+// vertex and the ground surface above it. A
 // rotation error would move the vertices to the other side of the centre.
 // 1e-12 m: rounding of the rotated vertices (computed here and by ODE from the
 // same outline); 1e-15 on the plane's unit normal.
@@ -158,12 +159,43 @@ TEST(OdePairContact, RotatedEllipseOnGroundActsAtItsDepthWeightedVertices) {
   std::vector<PairContact> out;
   collider.collide(out);
   ASSERT_TRUE(out[0].touching);
-  EXPECT_EQ(out[0].count, 2 * below);  // each vertex on both faces of the prism
+  EXPECT_EQ(out[0].contacts_reported, 2 * below);  // each vertex on both faces of the prism
+  EXPECT_EQ(out[0].count, below);                  // one kept per in-plane point
   EXPECT_NEAR(out[0].depth_m, -lowest.y(), 1e-12);
-  EXPECT_NEAR(out[0].depth_sum_m, 2.0 * weight, 1e-12);
+  EXPECT_NEAR(out[0].depth_sum_m, weight, 1e-12);
   EXPECT_NEAR(out[0].point_m.x(), moment.x() / weight, 1e-12);
   EXPECT_NEAR(out[0].point_m.y(), moment.y() / weight, 1e-12);
   EXPECT_NEAR(out[0].normal_ab.y(), 1.0, 1e-15);
+}
+
+// The boot of concave_seam_face.toml 2 mm into the ground on its sole: two
+// convex prisms, the heel a vertex of both, the toe of one. dCollide reports
+// the heel four times (two prisms, two faces each) and the toe twice; one
+// contact is kept per in-plane point, so the law spreads alike over heel and
+// toe and the pair acts at the sole's middle, under the centre of mass (x = 0).
+// Counting the heel twice put the point 0.4 / 6 m toward it and turned the
+// boot. 1e-12 m: rounding of 0.2 m coordinates.
+TEST(OdePairContact, VertexSharedByTwoPiecesIsOneContact) {
+  Case c;
+  Body boot;
+  boot.name = "boot";
+  boot.shape = Polygon{{Vec2(-0.2, -0.09982758620689655), Vec2(0.2, -0.09982758620689655),
+                        Vec2(0.2, 0.14017241379310344), Vec2(-0.12, -0.039827586206896554),
+                        Vec2(-0.12, 0.17017241379310344), Vec2(-0.2, 0.17017241379310344)}};
+  boot.mass_kg = 1.0;
+  boot.inertia_kgm2 = 0.0214747;
+  boot.position_m = Vec2(0.0, 0.09982758620689655 - 0.002);
+  c.bodies = {ground_body(), boot};
+  c.contacts = {pair(0, 1, kKv)};
+  OdeWorld world(c);
+  PairCollider collider(c, world);
+  std::vector<PairContact> out;
+  collider.collide(out);
+  ASSERT_TRUE(out[0].touching);
+  EXPECT_EQ(out[0].contacts_reported, 6);
+  EXPECT_EQ(out[0].count, 2);
+  EXPECT_NEAR(out[0].depth_sum_m, 2 * 0.002, 1e-12);
+  EXPECT_NEAR(out[0].point_m.x(), 0.0, 1e-12);
 }
 
 // Disk against disk (sphere-sphere): ODE's pos is the midpoint already.
