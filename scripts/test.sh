@@ -3,7 +3,7 @@
 # .ci/run calls it). Usage: scripts/test.sh [preset] [fuzz-seconds]
 #   preset         asan-ubsan (default: Clang -O1, AddressSanitizer + UBSan,
 #                  every test and benchmark-once test) | release | debug
-#   fuzz-seconds   how long each libFuzzer target runs afterwards (default 30;
+#   fuzz-seconds   how long each libFuzzer target runs afterwards (default 20;
 #                  0 skips fuzzing). scripts/fuzz.sh builds them with Clang.
 # The default is the sanitizer build because one build of the tree fits the
 # CI budget on 2 cores and a second does not: Clang's ASan build takes ~9.5
@@ -12,7 +12,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 PRESET="${1:-asan-ubsan}"
-FUZZ_SECONDS="${2:-30}"
+FUZZ_SECONDS="${2:-20}"
 start=$(date +%s)
 bash scripts/build.sh "$PRESET"
 bash scripts/setup_web.sh
