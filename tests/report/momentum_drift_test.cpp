@@ -8,6 +8,8 @@
 // momentum metric at all.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include <string>
 
 #include "planarbench/case_loader.hpp"
@@ -70,7 +72,7 @@ TEST(MomentumDrift, OneKickIsSeenRelativeToTheInitialMomentum) {
 }
 
 TEST(MomentumDrift, NotForBodiesTouchingTheGround) {
-  const Case c = load_case(std::string(PB_CASES_DIR) + "/falling_ball.toml");
+  const Case c = load_case(std::filesystem::path(PB_CASES_DIR) / "falling_ball.toml");
   RunResult r;
   r.case_name = c.name;
   r.engine_name = "mujoco";

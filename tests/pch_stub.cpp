@@ -1,0 +1,1 @@
+// The target whose precompiled headers every test reuses (tests/CMakeLists.txt).
