@@ -55,15 +55,13 @@ nlohmann::json derived_settings(const std::string& engine, const Case& derived) 
 }  // namespace
 
 std::vector<RunOutOfScope> runs_out_of_scope(const ResultsFile& results,
+                                             const std::vector<Case>& cases,
                                              const std::filesystem::path& thresholds_file,
                                              const std::vector<std::string>& covers) {
   std::vector<RunOutOfScope> out;
-  for (const auto& cr : results.cases) {
-    SettingsOverrides case_keys;
-    for (const auto& [key, value] : cr.overrides) {
-      if (is_case_key(key)) case_keys.set(key, value, SettingSource{"--set", 0});
-    }
-    const Case as_run = parse_case(cr.case_text, cr.case_path, cr.case_name, case_keys);
+  for (std::size_t ci = 0; ci < results.cases.size() && ci < cases.size(); ++ci) {
+    const CaseRuns& cr = results.cases[ci];
+    const Case& as_run = cases[ci];
     const std::optional<Case> beside = derived_case(thresholds_file, cr.case_name);
     const Case derived = beside ? *beside : parse_case(cr.case_text, cr.case_path, cr.case_name);
     std::vector<std::string> case_differences;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "planarbench/case.hpp"
 #include "planarbench/results_file.hpp"
 
 namespace pb::cli {
@@ -22,13 +23,15 @@ struct RunOutOfScope {
 };
 
 // The runs of `results` that the thresholds in `thresholds_file` were not
-// derived for. The baseline case of a run is the case file of the same name
+// derived for; cases[i] is results.cases[i]'s case as it was run (its text
+// under the case keys given with --set). The baseline case of a run is the case file of the same name
 // beside the thresholds file when there is one (the case the bands were
 // derived from), else the case text stored with the run. `covers` lists what
 // the file states its bands also hold for: a setting key ("dt" for every
 // engine, "mujoco.mode" for one), "foreknowledge" or "outline_points".
 [[nodiscard]] std::vector<RunOutOfScope> runs_out_of_scope(
-    const ResultsFile& results, const std::filesystem::path& thresholds_file,
+    const ResultsFile& results, const std::vector<Case>& cases,
+    const std::filesystem::path& thresholds_file,
     const std::vector<std::string>& covers);
 
 }  // namespace pb::cli

@@ -71,19 +71,24 @@ int run_check(const CheckOptions& opt) {
                                  results.campaign->kind, results.campaign->kind));
   }
   check_threshold_names(opt.thresholds, thresholds, results);
-  refuse_runs_out_of_scope(opt.results, runs_out_of_scope(results, opt.thresholds, file.covers));
-
-  std::vector<MetricValue> metrics;
-  std::vector<std::string> diverged;
-  std::vector<InvalidRun> invalid;  // NaN or inf in a run's samples: its checks fail
+  // each case as it was run: its text under the --set case keys stored with it
+  std::vector<Case> cases;
   for (const auto& cr : results.cases) {
-    // the case as it was run: its text under the --set case keys stored with it
     SettingsOverrides case_keys;
     for (const auto& [key, value] : cr.overrides) {
       if (is_case_key(key)) case_keys.set(key, value, SettingSource{"--set", 0});
     }
-    const Case c = parse_case(cr.case_text, cr.case_path, cr.case_name, case_keys);
-    auto m = case_metrics(c, cr);
+    cases.push_back(parse_case(cr.case_text, cr.case_path, cr.case_name, case_keys));
+  }
+  refuse_runs_out_of_scope(opt.results,
+                           runs_out_of_scope(results, cases, opt.thresholds, file.covers));
+
+  std::vector<MetricValue> metrics;
+  std::vector<std::string> diverged;
+  std::vector<InvalidRun> invalid;  // NaN or inf in a run's samples: its checks fail
+  for (std::size_t i = 0; i < results.cases.size(); ++i) {
+    const CaseRuns& cr = results.cases[i];
+    auto m = case_metrics(cases[i], cr);
     metrics.insert(metrics.end(), m.begin(), m.end());
     const auto bad = invalid_runs(cr);
     invalid.insert(invalid.end(), bad.begin(), bad.end());
