@@ -59,6 +59,20 @@ SpreadLaw spread_law(double k, double c, double deepest_m, double depth_m, doubl
   return {k * (deepest_m / depth_sum_m), c * (depth_m / depth_sum_m)};
 }
 
+FaceRow face_row(double k, double c, double deepest_m, double depth_m, double depth_sum_m,
+               int pressed) {
+  const SpreadLaw spread = spread_law(k, c, deepest_m, depth_m, depth_sum_m);
+  FaceRow row;
+  row.stiffness_n_per_m = spread.stiffness_n_per_m;
+  if (pressed <= 1) {
+    row.implicit_damping_ns_per_m = spread.damping_ns_per_m;
+    return row;
+  }
+  row.implicit_damping_ns_per_m = c / pressed;
+  row.explicit_damping_ns_per_m = spread.damping_ns_per_m - row.implicit_damping_ns_per_m;
+  return row;
+}
+
 LinearLaw linear_law(const ContactLaw& law, double m, double v) {
   if (!(m > 0.0) || !std::isfinite(m)) {
     throw std::invalid_argument("linear_law: the effective mass must be finite and > 0");

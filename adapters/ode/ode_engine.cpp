@@ -13,6 +13,7 @@
 // ode_contact_mapping says how, and mapping() records it.
 #include "planarbench/adapters/ode_engine.hpp"
 
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -37,170 +38,9 @@
 #include "planarbench/episode_tracker.hpp"
 #include "planarbench/errors.hpp"
 
-namespace pb {
+#include "ode_engine_impl.hpp"
 
-namespace {
-
-using internal::ode::FirstTouch;
-using internal::ode::LinearLaw;
-using internal::ode::OdeSettings;
-using internal::ode::OdeWorld;
-using internal::ode::PairCollider;
-using internal::ode::PairContact;
-using internal::ode::SoftContact;
-
-nlohmann::json vec_json(const Vec2& v) {
-  return nlohmann::json::array({v.x(), v.y()});
-}
-
-nlohmann::json response_json(const CollisionResponse& r) {
-  return {{"restitution", r.restitution},
-          {"force_duration_s", r.force_duration_s},
-          {"duration_s", r.duration_s},
-          {"peak_force_n", r.peak_force_n},
-          {"max_penetration_m", r.max_penetration_m},
-          {"impulse_ns", r.impulse_ns}};
-}
-
-nlohmann::json law_json(const ContactLaw& law) {
-  nlohmann::json j = {{"law", contact_law_name(law)}};
-  if (const auto* kv = std::get_if<KelvinVoigt>(&law)) {
-    j["stiffness_n_per_m"] = kv->stiffness_n_per_m;
-    j["damping_ns_per_m"] = kv->damping_ns_per_m;
-    j["damping_depth_m"] = kv->damping_depth_m;
-  } else if (const auto* hz = std::get_if<Hertz>(&law)) {
-    j["stiffness"] = hz->stiffness;
-    j["exponent"] = hz->exponent;
-  } else {
-    const auto& ln = std::get<LankaraniNikravesh>(law);
-    j["stiffness"] = ln.stiffness;
-    j["exponent"] = ln.exponent;
-    j["restitution"] = ln.restitution;
-  }
-  return j;
-}
-
-bool is_plain_kelvin_voigt(const ContactLaw& law) {
-  const auto* kv = std::get_if<KelvinVoigt>(&law);
-  return kv != nullptr && kv->damping_depth_m <= 0.0;
-}
-
-// what a soft contact (a linear spring-damper) cannot carry of the law
-nlohmann::json not_expressed_native(const ContactLaw& law) {
-  nlohmann::json out = nlohmann::json::array();
-  if (const auto* kv = std::get_if<KelvinVoigt>(&law)) {
-    if (kv->damping_depth_m > 0.0) {
-      out.push_back(fmt::format(
-          "the cubic damping ramp over {} m: a constant damper matched to the first impact",
-          kv->damping_depth_m));
-    }
-    return out;
-  }
-  const double n = std::holds_alternative<Hertz>(law) ? std::get<Hertz>(law).exponent
-                                                      : std::get<LankaraniNikravesh>(law).exponent;
-  out.push_back(fmt::format("the nonlinear stiffness K delta^{}: a linear spring k", n));
-  if (std::holds_alternative<LankaraniNikravesh>(law)) {
-    out.push_back(
-        "the hysteresis damping scaled by the approach speed latched at onset: a constant "
-        "damper c");
-  }
-  out.push_back(
-      "the equivalent matches the first impact's effective mass and approach speed only; "
-      "other impacts get other durations and restitutions from it");
-  return out;
-}
-
-// one contact pair's state between samples
-struct PairTrack {
-  double force_n = 0.0;               // N, normal force of the current sample
-  double latched_approach_mps = 0.0;  // m/s, delta_dot at onset (eq. 7's delta_dot^-)
-  bool in_contact = false;            // penetration > 0 at the current sample
-  double depth_m = 0.0;               // m, at the current sample
-  double speed_mps = 0.0;             // m/s, approach speed at the current sample
-  Vec2 normal_ab = Vec2::Zero();
-  Vec2 point_m = Vec2::Zero();
-};
-
-class OdeEngine final : public Engine {
- public:
-  OdeEngine() : binder_(internal::ode::bind_ode_settings(settings_)) {}
-
-  [[nodiscard]] std::string name() const override { return "ode"; }
-
-  [[nodiscard]] std::string version() const override {
-    return fmt::format(
-        "ODE {} (pkg-config at build time; headers dODE_VERSION {}; "
-        "dGetConfiguration: {})",
-        internal::ode::ode_pkgconfig_version(), internal::ode::ode_header_version(),
-        internal::ode::ode_configuration());
-  }
-
-  [[nodiscard]] Capability supports(const Case& c) const override;
-  [[nodiscard]] const SettingsBinder& settings() const override { return binder_; }
-  void build(const Case& c, const SettingsOverrides& overrides) override;
-  void advance_to(double t_s) override;
-  [[nodiscard]] double time() const override { return static_cast<double>(steps_) * step_s_; }
-  void body_states(std::vector<BodyState>& out) const override;
-  void contacts(std::vector<ContactSample>& out) const override;
-  [[nodiscard]] std::vector<ContactEpisode> episodes() const override {
-    return tracker_.episodes();
-  }
-  [[nodiscard]] long steps() const override { return steps_; }
-  [[nodiscard]] nlohmann::json mapping() const override;
-  [[nodiscard]] nlohmann::json extra_attributes() const override;
-  [[nodiscard]] Physics physics() const override;
-  [[nodiscard]] long steps_before_start() const override { return probe_steps_; }
-  [[nodiscard]] long library_steps_on_this_thread() const override {
-    return internal::ode::world_steps_on_this_thread();
-  }
-
- private:
-  void map_contacts_oracle(const std::vector<FirstTouch>& touches);
-  void map_contacts_native();
-  void add_common_mapping();
-  void add_native_joints(std::size_t p);
-  void add_oracle_joint(std::size_t p);
-  void step_once();
-  [[nodiscard]] bool injected_forces_run_away();
-  void sample_contacts();
-
-  OdeSettings settings_;
-  SettingsBinder binder_;
-
-  Case case_;
-  std::unique_ptr<OdeWorld> world_;
-  std::unique_ptr<PairCollider> collider_;
-  std::vector<PairContact> now_;  // ODE's contacts at the current state
-  std::vector<PairTrack> track_;
-  std::vector<SoftContact> soft_;  // oracle mode, per pair
-  std::vector<dJointFeedback> feedback_;  // per contact joint: pair p owns [p * cap, (p+1) * cap)
-  std::vector<int> joints_made_;   // per pair: contact joints made this step
-  std::size_t feedback_per_pair_ = 0;
-  std::vector<double> angle_rad_;  // continuous angles, per body
-  std::vector<Vec2> force_n_;      // inject mode: total force per body this step, N
-  std::vector<double> torque_nm_;  // inject mode: about the centre of mass, N m
-  EpisodeTracker tracker_;
-  bool inject_ = false;
-  bool oracle_ = false;
-  bool quick_ = false;
-  bool corrected_ = true;
-  long probe_steps_ = 0;  // ODE steps taken during build (the oracle's probe run)
-  // native mode: contact rows whose corrected damping did not hold (c < h k),
-  // and the largest h k / c seen
-  long rows_correction_invalid_ = 0;
-  long rows_made_ = 0;
-  double worst_hk_over_c_ = 0.0;
-  double step_s_ = 1e-4;
-  int substeps_ = 1;
-  long steps_ = 0;
-  std::string diverged_;  // non-empty once a body blew up
-  nlohmann::json mapping_ = nlohmann::json::object();
-  nlohmann::json extra_ = nlohmann::json::object();
-  // ODE's non-fatal messages during this run's steps (ode_library.hpp)
-  long messages_seen_ = 0;
-  long messages_mark_ = 0;  // the thread's count when last looked at
-  std::string first_message_;
-};
+namespace pb::internal::ode {
 
 Capability OdeEngine::supports(const Case& c) const {
   for (const Body& b : c.bodies) {
@@ -334,6 +174,7 @@ void OdeEngine::build(const Case& c, const SettingsOverrides& overrides) {
   track_.assign(pairs, PairTrack{});
   feedback_per_pair_ = oracle_ ? 1 : static_cast<std::size_t>(collider_->capacity());
   feedback_.assign(pairs * feedback_per_pair_, dJointFeedback{});
+  explicit_n_.assign(pairs * feedback_per_pair_, 0.0);
   joints_made_.assign(pairs, 0);
   now_.assign(pairs, PairContact{});
   angle_rad_.clear();
@@ -401,280 +242,6 @@ void OdeEngine::build(const Case& c, const SettingsOverrides& overrides) {
 
 // oracle: the mapping of every pair from the probe run, the step, and
 // mapping_["contacts"]
-void OdeEngine::map_contacts_oracle(const std::vector<FirstTouch>& touches) {
-  const bool corrected = settings_.damping_mapping == "corrected";
-  std::vector<LinearLaw> linear(case_.contacts.size());
-  std::vector<double> m_eff(case_.contacts.size(), 0.0);
-  std::vector<std::string> m_eff_how(case_.contacts.size());
-  std::vector<internal::ode::StepNeed> needs;
-
-  for (std::size_t p = 0; p < case_.contacts.size(); ++p) {
-    const ContactPair& pair = case_.contacts[p];
-    const FirstTouch& t = touches[p];
-    if (t.found) {
-      m_eff[p] = internal::ode::effective_mass_kg(case_, pair, t.centres_m, t.point_m, t.normal_ab);
-      m_eff_how[p] = fmt::format(
-          "1 / (J M^-1 J^T) along the normal at the first touch of a contact-free probe run "
-          "(same ODE model, dWorldStep at dt), t = {} s",
-          t.time_s);
-    } else {
-      // no touch without contact forces: translation only, at the start
-      double w = 0.0;
-      for (const int bi : {pair.body_a, pair.body_b}) {
-        const Body& b = case_.bodies[static_cast<std::size_t>(bi)];
-        if (!b.fixed) w += 1.0 / b.mass_kg;
-      }
-      m_eff[p] = w > 0.0 ? 1.0 / w : std::numeric_limits<double>::infinity();
-      m_eff_how[p] =
-          "no touch in the contact-free probe run: 1 / sum(1/m) of the moving bodies "
-          "(translation only)";
-    }
-    if (!std::isfinite(m_eff[p])) continue;  // neither body can move along the normal
-    linear[p] = internal::ode::linear_law(pair.law, m_eff[p], t.found ? t.approach_speed_mps : 0.0);
-    const CollisionResponse& r = linear[p].linear_response;
-    needs.push_back({linear[p].stiffness_n_per_m, linear[p].damping_ns_per_m, r.force_duration_s});
-  }
-
-  // the step: dt / substeps
-  if (settings_.substeps > 0) {
-    substeps_ = settings_.substeps;
-  } else {
-    substeps_ = internal::ode::auto_substeps(settings_.dt_s, needs, settings_.contact_steps,
-                                             corrected);
-  }
-  step_s_ = settings_.dt_s / substeps_;
-
-  soft_.assign(case_.contacts.size(), SoftContact{});
-  nlohmann::json pairs = nlohmann::json::array();
-  for (std::size_t p = 0; p < case_.contacts.size(); ++p) {
-    const ContactPair& pair = case_.contacts[p];
-    const FirstTouch& t = touches[p];
-    nlohmann::json jp = {
-        {"pair", pair.name},
-        {"body_a", case_.bodies[static_cast<std::size_t>(pair.body_a)].name},
-        {"body_b", case_.bodies[static_cast<std::size_t>(pair.body_b)].name},
-        {"case_law", law_json(pair.law)},
-        {"threshold",
-         fmt::format("not expressed: ODE reports a contact from depth >= 0 (case threshold {} m)",
-                     pair.threshold_m)}};
-    jp["expected_contact"] = {{"found", t.found}};
-    if (t.found) {
-      jp["expected_contact"]["time_s"] = t.time_s;
-      jp["expected_contact"]["point_m"] = vec_json(t.point_m);
-      jp["expected_contact"]["normal"] = vec_json(t.normal_ab);
-      jp["expected_contact"]["approach_speed_mps"] = t.approach_speed_mps;
-    }
-    jp["expected_contact"]["how"] =
-        "first step at which dCollide reports the pair in a contact-free probe run of the same "
-        "ODE model (dWorldStep at dt); the approach speed is the normal relative speed there";
-    jp["effective_mass_kg"] = m_eff[p];
-    jp["effective_mass_how"] = m_eff_how[p];
-    if (!std::isfinite(m_eff[p])) {
-      jp["expressed_as"] = "nothing: neither body can move along the contact normal";
-      pairs.push_back(jp);
-      continue;
-    }
-    const LinearLaw& lin = linear[p];
-    {
-      soft_[p] = internal::ode::soft_contact(lin.stiffness_n_per_m, lin.damping_ns_per_m, step_s_,
-                                             corrected);
-      jp["expressed_as"] = fmt::format(
-          "ODE contact joint, one per pair (the deepest of dCollide's contacts), mode = "
-          "dContactSoftERP | dContactSoftCFM, {}, no dContactBounce; the "
-          "contact row's lambda >= 0 is the clamp F >= 0",
-          pair.has_friction() ? "mu: Coulomb (friction)" : "mu = 0 (frictionless)");
-      jp["linear_law"] = {{"stiffness_n_per_m", lin.stiffness_n_per_m},
-                          {"damping_ns_per_m", lin.damping_ns_per_m},
-                          {"exact", lin.exact},
-                          {"how", lin.how},
-                          {"mass_kg", lin.mass_kg},
-                          {"approach_speed_mps", lin.approach_speed_mps},
-                          {"law_response", response_json(lin.law_response)},
-                          {"linear_response", response_json(lin.linear_response)}};
-      jp["soft_contact"] = {{"damping_mapping", settings_.damping_mapping},
-                            {"step_s", step_s_},
-                            {"erp", soft_[p].erp},
-                            {"cfm_m_per_ns", soft_[p].cfm},
-                            {"damping_used_ns_per_m", soft_[p].damping_used_ns_per_m},
-                            {"numerical_damping_hk_ns_per_m", soft_[p].numerical_damping_ns_per_m},
-                            {"correction_valid", soft_[p].correction_valid},
-                            {"note", soft_[p].note}};
-      jp["not_expressed"] = not_expressed_native(pair.law);
-    }
-    if (pair.has_friction()) jp["friction"] = internal::ode::friction_mapping(pair.friction);
-    pairs.push_back(jp);
-  }
-
-  mapping_ = nlohmann::json::object();
-  mapping_["engine"] = "ode";
-  mapping_["mode"] = settings_.mode;
-  mapping_["dt_s"] = settings_.dt_s;
-  mapping_["substeps"] = substeps_;
-  mapping_["step_s"] = step_s_;
-  mapping_["substeps_how"] =
-      settings_.substeps > 0
-          ? std::string("set by ode.substeps")
-          : fmt::format(
-                "auto: smallest n with at least {} steps over each pair's first-impact "
-                "force phase{}",
-                settings_.contact_steps,
-                corrected ? " and h k <= c (corrected mapping valid)" : "");
-  mapping_["contacts"] = pairs;
-  mapping_["integrator"] =
-      "ODE's semi-implicit Euler (velocity first, then position with the new velocity): "
-      "positions under constant acceleration lead the exact parabola by g h t / 2; orientation "
-      "by ODE's default infinitesimal update, 2 atan(omega h / 2) per step instead of omega h";
-  mapping_["collision"] =
-      "dSimpleSpace + dSpaceCollide; the near callback keeps the case's contact pairs only and "
-      "calls dCollide; of its contacts the deepest one is kept (a prism reports each vertex on "
-      "both faces, and several soft contacts would add their springs)";
-  add_common_mapping();
-  extra_ = {{"step_s", step_s_},
-            {"substeps", substeps_},
-            {"ode_configuration", internal::ode::ode_configuration()},
-            {"ode_pkgconfig_version", internal::ode::ode_pkgconfig_version()}};
-}
-
-// native and inject: the rule of every pair (no probe: nothing is known of
-// the run's future), and mapping_["contacts"]
-void OdeEngine::map_contacts_native() {
-  nlohmann::json pairs = nlohmann::json::array();
-  for (const ContactPair& pair : case_.contacts) {
-    nlohmann::json jp = {
-        {"pair", pair.name},
-        {"body_a", case_.bodies[static_cast<std::size_t>(pair.body_a)].name},
-        {"body_b", case_.bodies[static_cast<std::size_t>(pair.body_b)].name},
-        {"case_law", law_json(pair.law)},
-        {"threshold",
-         fmt::format("not expressed: ODE reports a contact from depth >= 0 (case threshold {} m)",
-                     pair.threshold_m)}};
-    if (inject_) {
-      jp["expressed_as"] =
-          "no ODE contact joint: the case's law (contact_force_n) evaluated every step at the "
-          "pair's penetration (its deepest contact) and applied with dBodyAddForceAtPos at the "
-          "depth-weighted centroid of its contacts along the deepest contact's normal, equal and "
-          "opposite; Lankarani-Nikravesh latches delta_dot at onset";
-      jp["not_expressed"] = nlohmann::json::array(
-          {"the force is explicit over each step (semi-implicit Euler of ODE's integrator)"});
-    } else {
-      jp["expressed_as"] = fmt::format(
-          "every contact dCollide reports for the pair (every convex piece of either body) is an "
-          "ODE contact joint, mode = dContactSoftERP | dContactSoftCFM, {}, no "
-          "dContactBounce; the row's lambda >= 0 is the clamp F >= 0",
-          pair.has_friction() ? "mu: Coulomb (friction)" : "mu = 0 (frictionless)");
-      jp["law_per_step"] = fmt::format(
-          "each step, in the near callback's pass: delta = the deepest contact's depth, "
-          "(k, c) = the law at delta as a linear spring-damper ({}); contact i (depth d_i) gets "
-          "k_i = k delta / sum d_j and c_i = c d_i / sum d_j, so the rows' springs sum to "
-          "k delta and their dampers to c, both at the depth-weighted centroid of the contacts "
-          "(SPEC §1, one force per pair)",
-          std::holds_alternative<KelvinVoigt>(pair.law)
-              ? "Kelvin-Voigt: its own K and c (c times the ramp's cubic step at delta)"
-          : std::holds_alternative<Hertz>(pair.law)
-              ? "Hertz: k = K delta^(n-1), c = 0"
-              : "Lankarani-Nikravesh: k = K delta^(n-1), c = K delta^n 3 (1 - e^2) / 4 / "
-                "delta_dot^-, delta_dot^- the approach speed at the first step with delta > 0");
-      nlohmann::json soft = {
-          {"rule",
-           fmt::format(
-               "ERP = h k_i / (h k_i + c'), CFM = 1 / (h k_i + c'), h = {} s, damping_mapping = "
-               "{}{}",
-               step_s_, settings_.damping_mapping,
-               corrected_
-                   ? ": c' = c_i - h k_i removes backward Euler's extra damping h k_i while "
-                     "c_i >= h k_i; where c_i < h k_i it is clamped at c' = 0 and the contact "
-                     "damps like h k_i (counted in damping_correction; for "
-                     "Lankarani-Nikravesh c / k = 3 (1 - e^2) delta / (4 delta_dot^-), so this "
-                     "holds only once delta >= 4 h delta_dot^- / (3 (1 - e^2)))"
-                   : ": backward Euler adds about h k_i of damping")}};
-      if (is_plain_kelvin_voigt(pair.law)) {
-        // a linear law's numbers for one contact (a sphere on a plane): fixed
-        const auto& kv = std::get<KelvinVoigt>(pair.law);
-        const SoftContact one =
-            internal::ode::soft_contact(kv.stiffness_n_per_m, kv.damping_ns_per_m, step_s_,
-                                        corrected_);
-        soft["one_contact"] = {{"erp", one.erp},
-                               {"cfm_m_per_ns", one.cfm},
-                               {"damping_used_ns_per_m", one.damping_used_ns_per_m},
-                               {"numerical_damping_hk_ns_per_m", one.numerical_damping_ns_per_m},
-                               {"correction_valid", one.correction_valid},
-                               {"note", one.note}};
-      }
-      jp["soft_contact"] = soft;
-      nlohmann::json lost = nlohmann::json::array();
-      if (!std::holds_alternative<KelvinVoigt>(pair.law)) {
-        lost.push_back(
-            "within a step the law is linear in delta: the nonlinear stiffness is its secant at "
-            "the step's start");
-      }
-      if (case_.bodies[static_cast<std::size_t>(pair.body_a)].fixed ||
-          case_.bodies[static_cast<std::size_t>(pair.body_b)].fixed) {
-        // nothing more to say
-      }
-      jp["not_expressed"] = lost;
-      if (pair.has_friction()) jp["friction"] = internal::ode::friction_mapping(pair.friction);
-    }
-    pairs.push_back(jp);
-  }
-  mapping_ = nlohmann::json::object();
-  mapping_["engine"] = "ode";
-  mapping_["mode"] = settings_.mode;
-  mapping_["dt_s"] = settings_.dt_s;
-  mapping_["substeps"] = substeps_;
-  mapping_["step_s"] = step_s_;
-  mapping_["substeps_how"] =
-      substeps_ == 1 ? std::string("none: ODE steps at dt, the step given")
-                     : fmt::format("set by ode.substeps: {} steps per dt", substeps_);
-  mapping_["contacts"] = pairs;
-  mapping_["collision"] =
-      "dSimpleSpace + dSpaceCollide; the near callback keeps the case's contact pairs only and "
-      "calls dCollide on each pair of their geoms (convex pieces); one contact is kept per "
-      "point of the plane (a prism reports each vertex on both faces, and a vertex two convex "
-      "pieces share once per piece: ode_pair_contact.cpp), the law spread over their depths";
-  add_common_mapping();
-  extra_ = {{"step_s", step_s_},
-            {"substeps", substeps_},
-            {"ode_configuration", internal::ode::ode_configuration()},
-            {"ode_pkgconfig_version", internal::ode::ode_pkgconfig_version()}};
-}
-
-void OdeEngine::add_common_mapping() {
-  mapping_["integrator"] =
-      "ODE's semi-implicit Euler (velocity first, then position with the new velocity): "
-      "positions under constant acceleration lead the exact parabola by g h t / 2; orientation "
-      "by ODE's default infinitesimal update, 2 atan(omega h / 2) per step instead of omega h";
-  mapping_["contact_point"] =
-      "midpoint of the two geoms' deepest points: ODE's pos shifted by depth/2 along the normal "
-      "(sphere-plane, sphere-convex, convex-plane); sphere-sphere pos is the midpoint already; "
-      "with several contacts, their depth-weighted centroid";
-}
-
-nlohmann::json OdeEngine::extra_attributes() const {
-  nlohmann::json x = extra_;
-  if (messages_seen_ > 0) {
-    x["ode_messages_noted"] = {
-        {"count", messages_seen_},
-        {"example", first_message_},
-        {"note", "ODE's non-fatal dMessage calls during the run's steps, counted instead of "
-                 "printed"}};
-  }
-  return x;
-}
-
-nlohmann::json OdeEngine::mapping() const {
-  nlohmann::json m = mapping_;
-  if (!oracle_ && !inject_ && m.is_object()) {
-    m["damping_correction"] = {
-        {"what",
-         "contact rows of this run whose corrected damping mapping did not hold (c_i < h k_i): "
-         "there ODE's implicit soft contact damps like h k_i instead of c_i"},
-        {"rows", rows_made_},
-        {"rows_invalid", rows_correction_invalid_},
-        {"worst_hk_over_c", worst_hk_over_c_}};
-  }
-  return m;
-}
-
 void OdeEngine::advance_to(double t_s) {
   if (!world_) throw EngineError("ode: advance_to before build");
   internal::ode::ensure_ode_ready_in_this_thread();
@@ -735,11 +302,24 @@ void OdeEngine::add_native_joints(std::size_t p) {
   const LinearizedLaw lin =
       linearize_law(case_.contacts[p].law, pc.depth_m, track_[p].latched_approach_mps);
   if (!(lin.stiffness_n_per_m > 0.0)) return;  // nothing pressed in: no force
+  const bool friction = case_.contacts[p].has_friction();
+  int pressed = 0;
+  for (int i = 0; i < pc.count; ++i) pressed += pc.geoms[static_cast<std::size_t>(i)].depth > 0.0;
   for (int i = 0; i < pc.count; ++i) {
     const dContactGeom& g = pc.geoms[static_cast<std::size_t>(i)];
     if (!(g.depth > 0.0)) continue;  // a touching contact carries no spring
-    const internal::ode::SpreadLaw row_law = internal::ode::spread_law(
+    // with friction, one CFM for the pair's rows (ode_contact_mapping.hpp, face_row)
+    internal::ode::SpreadLaw row_law = internal::ode::spread_law(
         lin.stiffness_n_per_m, lin.damping_ns_per_m, pc.depth_m, g.depth, pc.depth_sum_m);
+    double explicit_n = 0.0;  // N, along the normal on g1's body
+    if (friction) {
+      const internal::ode::FaceRow face =
+          internal::ode::face_row(lin.stiffness_n_per_m, lin.damping_ns_per_m, pc.depth_m,
+                                  g.depth, pc.depth_sum_m, pressed);
+      row_law.damping_ns_per_m = face.implicit_damping_ns_per_m;
+      explicit_n = -face.explicit_damping_ns_per_m * separation_speed_mps(g);
+      add_normal_force(g, explicit_n);
+    }
     const internal::ode::SoftRow row = internal::ode::soft_row(
         row_law.stiffness_n_per_m, row_law.damping_ns_per_m, step_s_, corrected_);
     if (!row.correction_valid) {
@@ -760,8 +340,35 @@ void OdeEngine::add_native_joints(std::size_t p) {
     dJointAttach(j, dGeomGetBody(g.g1), dGeomGetBody(g.g2));
     auto& n = joints_made_[p];
     dJointSetFeedback(j, &feedback_[p * feedback_per_pair_ + static_cast<std::size_t>(n)]);
+    explicit_n_[p * feedback_per_pair_ + static_cast<std::size_t>(n)] = explicit_n;
     ++n;
     ++rows_made_;
+  }
+}
+
+// m/s, g1's material point at the contact relative to g2's, along the normal
+// (which points into g1): > 0 separating
+double OdeEngine::separation_speed_mps(const dContactGeom& g) const {
+  dVector3 v1 = {0.0, 0.0, 0.0, 0.0};
+  dVector3 v2 = {0.0, 0.0, 0.0, 0.0};
+  if (const dBodyID b = dGeomGetBody(g.g1); b != nullptr) {
+    dBodyGetPointVel(b, g.pos[0], g.pos[1], g.pos[2], v1);
+  }
+  if (const dBodyID b = dGeomGetBody(g.g2); b != nullptr) {
+    dBodyGetPointVel(b, g.pos[0], g.pos[1], g.pos[2], v2);
+  }
+  return g.normal[0] * (v1[0] - v2[0]) + g.normal[1] * (v1[1] - v2[1]) +
+         g.normal[2] * (v1[2] - v2[2]);
+}
+
+// f_n (N) along the contact's normal on g1's body at the contact, -f_n on g2's
+void OdeEngine::add_normal_force(const dContactGeom& g, double f_n) const {
+  if (f_n == 0.0) return;
+  for (const auto& [geom, sign] : {std::pair{g.g1, 1.0}, std::pair{g.g2, -1.0}}) {
+    if (const dBodyID b = dGeomGetBody(geom); b != nullptr) {
+      dBodyAddForceAtPos(b, sign * f_n * g.normal[0], sign * f_n * g.normal[1],
+                         sign * f_n * g.normal[2], g.pos[0], g.pos[1], g.pos[2]);
+    }
   }
 }
 
@@ -825,10 +432,12 @@ void OdeEngine::step_once() {
     for (std::size_t p = 0; p < pairs; ++p) {
       double f = 0.0;  // N
       for (int i = 0; i < joints_made_[p]; ++i) {
-        const dJointFeedback& fb = feedback_[p * feedback_per_pair_ + static_cast<std::size_t>(i)];
+        const std::size_t row = p * feedback_per_pair_ + static_cast<std::size_t>(i);
+        const dJointFeedback& fb = feedback_[row];
         const int k = oracle_ ? now_[p].deepest : i;
         const dReal* n = now_[p].geoms[static_cast<std::size_t>(k)].normal;
-        f += std::max(0.0, fb.f1[0] * n[0] + fb.f1[1] * n[1] + fb.f1[2] * n[2]);
+        // the row's force and, with friction, its explicit damping (add_native_joints)
+        f += std::max(0.0, fb.f1[0] * n[0] + fb.f1[1] * n[1] + fb.f1[2] * n[2] + explicit_n_[row]);
       }
       track_[p].force_n = f;
     }
@@ -922,10 +531,12 @@ void OdeEngine::contacts(std::vector<ContactSample>& out) const {
   }
 }
 
-}  // namespace
+}  // namespace pb::internal::ode
+
+namespace pb {
 
 std::unique_ptr<Engine> make_ode_engine() {
-  return std::make_unique<OdeEngine>();
+  return std::make_unique<internal::ode::OdeEngine>();
 }
 
 }  // namespace pb

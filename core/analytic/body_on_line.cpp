@@ -24,8 +24,17 @@ Vec2 line_normal(const Body& line) {
 
 }  // namespace
 
+double static_level_m(const Case& c, int body, int line, int pair) {
+  const ContactPair& p = c.contacts.at(static_cast<std::size_t>(pair));
+  const auto* kv = std::get_if<KelvinVoigt>(&p.law);
+  if (!p.has_friction() || kv == nullptr || !(kv->stiffness_n_per_m > 0.0)) return 0.0;
+  const Body& d = c.bodies.at(static_cast<std::size_t>(body));
+  const Vec2 n = line_normal(c.bodies.at(static_cast<std::size_t>(line)));
+  return d.mass_kg * std::abs(c.gravity_mps2.dot(n)) / kv->stiffness_n_per_m;
+}
+
 std::optional<TranslatingSupport> translating_support(const Body& body, const Vec2& normal,
-                                                      std::string* why) {
+                                                      std::string* why, double level_m) {
   if (const auto* circle = std::get_if<Circle>(&body.shape)) {
     return TranslatingSupport{circle->radius_m, std::numeric_limits<double>::infinity(), 0};
   }
@@ -55,20 +64,29 @@ std::optional<TranslatingSupport> translating_support(const Body& body, const Ve
   double offset_sum = 0.0;
   int face = 0;
   double next = std::numeric_limits<double>::infinity();
+  double face_top = lowest;  // m, the highest of the face's vertices
+  double face_min = std::numeric_limits<double>::infinity();
+  double face_max = -face_min;  // m, the face's ends along the line
   for (const Vec2& v : polygon->points_m) {
     const Vec2 w(c * v.x() - s * v.y(), s * v.x() + c * v.y());
     const double h = w.dot(normal);
-    if (h <= lowest + tol) {
+    if (h <= lowest + tol + level_m) {
       offset_sum += w.dot(tangent);
       ++face;
+      face_top = std::max(face_top, h);
+      face_min = std::min(face_min, w.dot(tangent));
+      face_max = std::max(face_max, w.dot(tangent));
     } else {
       next = std::min(next, h);
     }
   }
   // equal depths put the law's force at the face's middle (SPEC §1): it must
-  // lie on the normal through the centre of mass, or the body turns
+  // lie on the normal through the centre of mass, or the body turns. A face
+  // tilted within level_m by phi = (its ends' height difference) / (its
+  // width) has its middle moved by the tilt alone, support x phi: allowed
+  const double tilt = face > 1 ? (face_top - lowest) / (face_max - face_min) : 0.0;
   const double middle = offset_sum / face;
-  if (std::abs(middle) > tol) {
+  if (std::abs(middle) > tol + std::abs(lowest) * tilt) {
     return refuse(fmt::format(
         "the polygon '{}' touches the line with {} lowest vertices whose middle lies {:.3g} m "
         "beside its centre of mass: the contact force would turn it (no closed form)",
@@ -87,7 +105,8 @@ NormalContactParams BodyOnLine::normal_params(const Case& c, int body, int line,
   const Body& l = c.bodies.at(static_cast<std::size_t>(line));
   const auto& law = std::get<KelvinVoigt>(c.contacts.at(static_cast<std::size_t>(pair)).law);
   const Vec2 n = line_normal(l);
-  const double radius = translating_support(d, n, nullptr).value().support_m;
+  const double radius =
+      translating_support(d, n, nullptr, static_level_m(c, body, line, pair)).value().support_m;
   const double height = (d.position_m - l.position_m).dot(n);  // centre above the line, m
 
   NormalContactParams p;
@@ -118,7 +137,8 @@ BodyOnLine::BodyOnLine(const Case& c, int body, int line, int pair)
   pair_body_b_ = cp.body_b;
   body_is_a_ = cp.body_a == body;
   shape_ = shape_type_name(d.shape);
-  support_ = translating_support(d, line_normal(l), nullptr).value();
+  support_ = translating_support(d, line_normal(l), nullptr, static_level_m(c, body, line, pair))
+                 .value();
   line_origin_m_ = l.position_m;
   tangent_ = line_tangent(l);
   normal_dir_ = line_normal(l);

@@ -36,9 +36,24 @@ struct TranslatingSupport {
   double clearance_m = 0.0;   // m
   int face_vertices = 0;      // polygon vertices at the lowest level (0 for a disk)
 };
+// level_m: vertices within level_m of the lowest count as its face (0: to
+// the rounding of the rotated coordinates); see static_level_m
 [[nodiscard]] std::optional<TranslatingSupport> translating_support(const Body& body,
                                                                     const Vec2& normal,
-                                                                    std::string* why);
+                                                                    std::string* why,
+                                                                    double level_m = 0.0);
+
+// m: how far a block's face may stand from level and still be the rigid
+// closed form's face. A compliant face held by friction on an incline rests
+// tilted: the friction's moment m g sin(theta) x (centre to face) must be
+// balanced by the normal force's line of action moved off the middle, which
+// the law (SPEC §1) does by the face's tilt, its deeper end pressed in by the
+// static penetration m g_n / K; the tilt vanishes as K grows, which is the
+// rigid limit the closed form describes. A case may start there (the shipped
+// square_hold): its face's ends then differ in height by less than the static
+// penetration. 0 without friction (nothing tilts the face) or for a law
+// other than plain Kelvin-Voigt.
+[[nodiscard]] double static_level_m(const Case& c, int body, int line, int pair);
 
 class BodyOnLine {
  public:

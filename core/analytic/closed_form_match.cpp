@@ -122,7 +122,7 @@ ClosedFormMatch match_analytic(const Case& c) {
   }
   const Vec2 n(-std::sin(l.angle_rad), std::cos(l.angle_rad));
   std::string why;
-  if (!translating_support(d, n, &why)) return none(why);
+  if (!translating_support(d, n, &why, static_level_m(c, moving[0], other, 0))) return none(why);
   ClosedFormMatch m;
   m.kind = ClosedFormKind::body_on_line;
   m.disk = moving[0];

@@ -292,6 +292,31 @@ TEST(BodyOnLine, RefusesBodiesThatWouldTurn) {
   EXPECT_EQ(tip->face_vertices, 1);
 }
 
+// A block held by friction rests tilted in its compliant static pose
+// (scripts/block_cases.py): the closed form takes it as its rigid limit, a
+// face, while its ends differ in height by at most the static penetration
+// m g_n / K (static_level_m); without friction nothing tilts a face, and a
+// square tilted by as little is a corner beside its centre.
+TEST(BodyOnLine, AFrictionHeldFaceInItsStaticPoseIsAFace) {
+  const Vec2 up(0, 1);
+  Case c = square_case(0.0, 0.0, 0.0);
+  c.contacts[0].friction = 0.5;
+  const double level = static_level_m(c, 1, 0, 0);
+  const auto& kv = std::get<KelvinVoigt>(c.contacts[0].law);
+  // m g / K on level ground, one rounding
+  EXPECT_NEAR(level, c.bodies[1].mass_kg * 9.8066 / kv.stiffness_n_per_m, 1e-15 * level);
+  // ends 0.9 and 1.1 of the level apart (the 0.2 m face turned by asin(d / 0.2))
+  for (const double f : {0.9, 1.1}) {
+    Body tilted = c.bodies[1];
+    tilted.angle_rad = std::asin(f * level / 0.2);
+    std::string why;
+    EXPECT_EQ(translating_support(tilted, up, &why, level).has_value(), f < 1.0) << f << why;
+    EXPECT_FALSE(translating_support(tilted, up, &why).has_value());
+  }
+  c.contacts[0].friction = 0.0;
+  EXPECT_EQ(static_level_m(c, 1, 0, 0), 0.0);
+}
+
 // A penetration deeper than the next vertex level is not this closed form:
 // a flat triangle's apex 1 cm above its base, dropped hard
 TEST(BodyOnLine, StopsWhereAnotherVertexWouldTouch) {

@@ -264,7 +264,8 @@ TEST(ResolveCases, AllGivesEveryCaseFileSorted) {
                        "disk_oblique_roll", "disk_oblique_slide", "disk_roll", "disk_slip",
                        "disk_throw", "dual_pendulum", "ellipse_incline", "falling_ball",
                        "falling_ball_paper", "head_on", "incline_launch", "pendulum_wall",
-                       "sliding", "sliding_friction", "sliding_paper", "square_landing"}));
+                       "sliding", "sliding_friction", "sliding_paper", "square_hold",
+                       "square_landing", "square_slide", "square_stop"}));
 }
 
 // tests/data/cases/dir holds two cases and one TOML file without [case]
@@ -294,7 +295,7 @@ TEST(ResolveCases, UnknownNameListsTheCases) {
                        "disk_oblique_roll, disk_oblique_slide, disk_roll, disk_slip, disk_throw, "
                        "dual_pendulum, ellipse_incline, falling_ball, falling_ball_paper, "
                        "head_on, incline_launch, pendulum_wall, sliding, sliding_friction, "
-                       "sliding_paper, square_landing"),
+                       "sliding_paper, square_hold, square_landing, square_slide, square_stop"),
               std::string::npos)
         << msg;
     EXPECT_NE(msg.find("did you mean 'sliding'?"), std::string::npos) << msg;

@@ -147,6 +147,25 @@ TEST(ExactContact, FaceOnLineActsAtItsDepthWeightedMiddle) {
   expect_consistent(tilt);
 }
 
+TEST(ExactContact, FaceSpreadIsTheCornersDepthWeightedVariance) {
+  // ContactGeometry::spread_m2 of the tilted square above (corners 0.03 and
+  // 0.01 m deep, 0.2 cos a apart along the line): for two points of depths
+  // d1, d2 a distance L apart, d1 d2 L^2 / (d1 + d2)^2 = 0.03 x 0.01 x
+  // (0.2 cos a)^2 / 0.04^2 (worked out by hand); flat, (0.2 / 2)^2 = 0.01;
+  // one corner in, 0
+  const Polygon sq{{Vec2(-0.1, -0.1), Vec2(0.1, -0.1), Vec2(0.1, 0.1), Vec2(-0.1, 0.1)}};
+  const ExactContact pl(HalfPlane{}, sq);
+  const double a = std::asin(0.1);
+  const double h = 0.1 * (std::cos(a) + 0.1) - 0.03;
+  const double along = 0.2 * std::cos(a);  // m, the corners' distance along the line
+  // the depths carry 1e-15 m each (above); the variance 1e-16 m^2 of 1e-2
+  EXPECT_NEAR(pl.evaluate(Pose{}, Pose{Vec2(0, h), a}).spread_m2,
+              0.03 * 0.01 * along * along / (0.04 * 0.04), 1e-15);
+  EXPECT_NEAR(pl.evaluate(Pose{}, Pose{Vec2(0.3, 0.09), 0.0}).spread_m2, 0.01, 1e-15);
+  const double one_in = 0.1 * (std::cos(a) + std::sin(a)) - 0.005;  // only the left corner in
+  EXPECT_EQ(pl.evaluate(Pose{}, Pose{Vec2(0, one_in), a}).spread_m2, 0.0);
+}
+
 TEST(ExactContact, SupportedPairs) {
   EXPECT_TRUE(ExactContact::supported(HalfPlane{}, Circle{1}));
   EXPECT_TRUE(ExactContact::supported(Circle{1}, Ellipse{1, 2}));

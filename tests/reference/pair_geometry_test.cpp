@@ -28,6 +28,38 @@ TEST(PairGeometry, ModesAgreeWhereTheOutlineIsExact) {
   EXPECT_NEAR(outline.evaluate(Pose{}, disk).gap_m, 0.1, 1e-14);
 }
 
+// A square pressed tilted into a half-plane of 180 outline points (22 mm
+// apart over its 4 m): frictionless, the paper's rule takes the line of action
+// from the half-plane's points inside the square (more of them than its two
+// corners); with friction, from the square's own corners, as geometry=exact
+// does, in both detection modes: the same point and spread as the exact
+// routine (whose closed form exact_contact_test checks) to the outline's
+// rounding of the corners' placement
+TEST(PairGeometry, FrictionOnAHalfPlaneActsAtTheBodysOwnPoints) {
+  const Polygon sq{{Vec2(-0.1, -0.1), Vec2(0.1, -0.1), Vec2(0.1, 0.1), Vec2(-0.1, 0.1)}};
+  Body line = body(HalfPlane{4.0});
+  Body square = body(sq, 4);
+  const double a = std::asin(0.001);
+  const Pose pose{Vec2(0.013, 0.1 * (std::cos(a) + 0.001) - 3e-4), a};  // corners 3e-4, 1e-4 deep
+  PairGeometry exact(line, square, GeometryMode::exact);
+  const ContactGeometry want = exact.evaluate(Pose{}, pose);
+  ASSERT_GT(want.spread_m2, 0.0);
+  for (const DetectionMode d : {DetectionMode::fast, DetectionMode::brute}) {
+    PairGeometry with(line, square, GeometryMode::outline, d, true);
+    const ContactGeometry g = with.evaluate(Pose{}, pose);
+    // corners placed by a rotation and a sum: 1e-16 m each; the centroid and
+    // spread of two depths ~1e-4 m: 1e-12 m, 1e-14 m^2
+    EXPECT_NEAR(g.gap_m, want.gap_m, 1e-15);
+    EXPECT_NEAR(g.point_b_m.x(), want.point_b_m.x(), 1e-12);
+    EXPECT_NEAR(g.point_b_m.y(), want.point_b_m.y(), 1e-12);
+    EXPECT_NEAR(g.spread_m2, want.spread_m2, 1e-14);
+    PairGeometry without(line, square, GeometryMode::outline, d, false);
+    // frictionless: the line's samples 22 mm apart under the 0.2 m face; their
+    // centroid is off the corners' by several mm
+    EXPECT_GT(std::abs(without.evaluate(Pose{}, pose).point_b_m.x() - want.point_b_m.x()), 1e-3);
+  }
+}
+
 TEST(PairGeometry, SupportDependsOnTheMode) {
   std::string why;
   EXPECT_TRUE(PairGeometry::supported(body(Ellipse{1, 0.5}), body(Ellipse{1, 0.5}),

@@ -78,7 +78,7 @@ ContactDynamics::ContactDynamics(const Case& c, GeometryMode mode, DetectionMode
     }
     geometry_.push_back(std::make_unique<PairGeometry>(c.bodies[static_cast<std::size_t>(p.body_a)],
                                                        c.bodies[static_cast<std::size_t>(p.body_b)],
-                                                       mode, detection));
+                                                       mode, detection, p.has_friction()));
   }
   bodies_ = c.bodies;
   for (const Body& b : bodies_) {
@@ -123,6 +123,20 @@ PairEvaluation ContactDynamics::evaluate(int k, const PairMode& mode) {
     e.slip_rate_mps = e.tangent.dot(vb - va);
   }
   return e;
+}
+
+void ContactDynamics::add_damping_couple(int k, const PairEvaluation& e) {
+  // the law's damping spread over a face's points by depth: besides the force
+  // at their centroid, the couple -B spread (omega_b - omega_a) of the rates
+  // that a rotation about the centroid gives the points (coulomb_friction.hpp)
+  if (!(e.geometry.spread_m2 > 0.0)) return;
+  const ContactPair& p = pairs_[static_cast<std::size_t>(k)];
+  const double b = law_damping_ns_per_m(p.law, -e.geometry.gap_m,
+                                        modes_[static_cast<std::size_t>(k)].approach_speed_mps);
+  const double omega = model_.angular_velocity(p.body_b, u_) - model_.angular_velocity(p.body_a, u_);
+  const double torque = -b * e.geometry.spread_m2 * omega;  // N m, on b
+  model_.add_couple(p.body_b, torque, gen_force_);
+  model_.add_couple(p.body_a, -torque, gen_force_);
 }
 
 void ContactDynamics::add_friction() {
@@ -196,6 +210,7 @@ void ContactDynamics::derivative(const Eigen::VectorXd& y, Eigen::VectorXd& dy) 
     const Vec2 f = e.force_n * e.geometry.normal;
     model_.add_point_force(p.body_b, q_, e.geometry.point_b_m, f, gen_force_);
     model_.add_point_force(p.body_a, q_, e.geometry.point_a_m, -f, gen_force_);
+    if (p.has_friction()) add_damping_couple(k, e);
   }
   if (has_friction_) {
     add_friction();

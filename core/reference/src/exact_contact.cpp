@@ -1,5 +1,6 @@
 #include "planarbench/reference/exact_contact.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -69,6 +70,9 @@ ContactGeometry halfplane_polygon(const Pose& plane, const WorldOutline& poly, c
   int below = 0;              // vertices under the line
   double depth_sum = 0.0;     // m
   Vec2 moment = Vec2::Zero(); // m^2, sum of depth x vertex (polygon frame)
+  double second = 0.0;
+  // m^3, sum of depth x (vertex along the surface)^2
+  const Vec2 tl(nl.y(), -nl.x());  // the surface's tangent, polygon frame
   for (int i = 0; i < poly.size(); ++i) {
     const double h = nl.x() * (poly.x[i] - origin.x()) + nl.y() * (poly.y[i] - origin.y());
     if (h < h_min) {
@@ -79,6 +83,8 @@ ContactGeometry halfplane_polygon(const Pose& plane, const WorldOutline& poly, c
       ++below;
       depth_sum -= h;
       moment -= h * Vec2(poly.x[i], poly.y[i]);
+      const double s = tl.dot(Vec2(poly.x[i], poly.y[i]));
+      second -= h * s * s;
     }
   }
   ContactGeometry g;
@@ -90,6 +96,10 @@ ContactGeometry halfplane_polygon(const Pose& plane, const WorldOutline& poly, c
   g.point_b_m = below > 1 ? body.to_world(moment / depth_sum)
                           : body.to_world(Vec2(poly.x[lowest], poly.y[lowest]));
   g.point_a_m = g.point_b_m - h_min * n;
+  if (below > 1) {
+    const double mean = tl.dot(moment) / depth_sum;
+    g.spread_m2 = std::max(0.0, second / depth_sum - mean * mean);
+  }
   return g;
 }
 

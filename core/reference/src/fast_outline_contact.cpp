@@ -672,7 +672,7 @@ ContactGeometry FastOutlineContactSearch::evaluate(const Pose& pose_a, const Pos
   };
   const internal::Run run_a = run_of(a_, deepest_a);
   const internal::Run run_b = run_of(b_, deepest_b);
-  const bool use_a = run_a.points > run_b.points || (run_a.points == run_b.points && a_deepest);
+  const bool use_a = internal::action_points_of_a(run_a, run_b, a_deepest, action_points_);
   if (use_a) {
     g.point_a_m = run_a.centroid_m;
     g.point_b_m = g.point_a_m - delta * g.normal;
@@ -680,6 +680,7 @@ ContactGeometry FastOutlineContactSearch::evaluate(const Pose& pose_a, const Pos
     g.point_b_m = run_b.centroid_m;
     g.point_a_m = g.point_b_m + delta * g.normal;
   }
+  g.spread_m2 = internal::spread_along(use_a ? run_a : run_b, Vec2(g.normal.y(), -g.normal.x()));
   return g;
 }
 

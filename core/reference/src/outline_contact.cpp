@@ -212,7 +212,7 @@ ContactGeometry OutlineContactSearch::evaluate_placed(const WorldOutline& a,
   // of the body that has more of them
   const internal::Run run_a = all_inside(a, hits_a_, deepest_a.vertex, inside_ids_);
   const internal::Run run_b = all_inside(b, hits_b_, deepest_b.vertex, inside_ids_);
-  const bool use_a = run_a.points > run_b.points || (run_a.points == run_b.points && a_deepest);
+  const bool use_a = internal::action_points_of_a(run_a, run_b, a_deepest, action_points_);
   if (use_a) {
     g.point_a_m = run_a.centroid_m;
     g.point_b_m = g.point_a_m - delta * g.normal;
@@ -220,6 +220,7 @@ ContactGeometry OutlineContactSearch::evaluate_placed(const WorldOutline& a,
     g.point_b_m = run_b.centroid_m;
     g.point_a_m = g.point_b_m + delta * g.normal;
   }
+  g.spread_m2 = internal::spread_along(use_a ? run_a : run_b, Vec2(g.normal.y(), -g.normal.x()));
   return g;
 }
 

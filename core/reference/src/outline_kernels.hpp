@@ -137,7 +137,16 @@ struct Run {
   int run_points = 0;              // points of the run around its start
   double w_sum = 0.0;              // m, sum of the depths
   Vec2 p_sum = Vec2::Zero();       // m^2, sum of depth x point
+  Eigen::Matrix2d pp_sum = Eigen::Matrix2d::Zero();  // m^3, sum of depth x point point^T
 };
+
+// m^2, the depth-weighted variance of a run's points along `tangent` about
+// their centroid (ContactGeometry::spread_m2); 0 for one point
+[[nodiscard]] inline double spread_along(const Run& r, const Vec2& tangent) {
+  if (r.points < 2 || !(r.w_sum > 0.0)) return 0.0;
+  const Eigen::Matrix2d cov = r.pp_sum / r.w_sum - r.centroid_m * r.centroid_m.transpose();
+  return std::max(0.0, tangent.dot(cov * tangent));
+}
 
 // The run around `start` (an inside point, or -1 for none) of an outline of n
 // points: `inside(i)`, `depth_m(i)` and `point_m(i)` (world) of point i. Walks
@@ -151,8 +160,10 @@ template <class Inside, class Depth, class Point>
   Vec2 p_sum = Vec2::Zero();
   auto add = [&](int i) {
     const double w = depth_m(i);
+    const Vec2 p = point_m(i);
     w_sum += w;
-    p_sum += w * point_m(i);
+    p_sum += w * p;
+    r.pp_sum += w * p * p.transpose();
     ++r.points;
   };
   add(start);
@@ -175,6 +186,17 @@ template <class Inside, class Depth, class Point>
   return r;
 }
 
+// whose inside points place the line of action: a's (true) or b's (false)
+[[nodiscard]] inline bool action_points_of_a(const Run& a, const Run& b, bool a_deepest,
+                                             ActionPoints rule) {
+  switch (rule) {
+    case ActionPoints::a: return a.first >= 0 || b.first < 0;
+    case ActionPoints::b: return !(b.first >= 0 || a.first < 0);
+    case ActionPoints::more: break;
+  }
+  return a.points > b.points || (a.points == b.points && a_deepest);
+}
+
 // SPEC §1, one force per pair: the line of action passes through the
 // depth-weighted centroid of every inside point of the body, not only of the
 // run around the deepest one. A concave body pressed in at several places
@@ -191,8 +213,10 @@ void add_other_inside(Run& r, int n, const Indices& inside_ascending, Depth&& de
   for (const int i : inside_ascending) {
     if ((i - r.first + n) % n < r.run_points) continue;  // in the run already
     const double w = depth_m(i);
+    const Vec2 p = point_m(i);
     r.w_sum += w;
-    r.p_sum += w * point_m(i);
+    r.p_sum += w * p;
+    r.pp_sum += w * p * p.transpose();
     ++r.points;
     added = true;
   }

@@ -9,6 +9,23 @@ namespace {
 bool both_polygons(const Body& a, const Body& b) {
   return std::holds_alternative<Polygon>(a.shape) && std::holds_alternative<Polygon>(b.shape);
 }
+
+// A pair with friction on a half-plane takes its line of action from the
+// body's own inside points: the half-plane's outline points sample a straight
+// line at a spacing its extent sets (22 mm for 4 m), so by the paper's rule
+// (the body with more inside points) a polygon's face would be pressed at
+// wherever those samples fall, a stiffness against rocking of K times their
+// spread (w^2 / 12 for a face of width w) instead of the face's own corners'
+// (w^2 / 4), and the one-force law's dependence on tilt (dF / dphi = K w / 2,
+// not the moment's on depth: a circulatory force) then drives a stuck face
+// into self-excited rocking (reference README, "Friction on a face").
+// Frictionless pairs keep the paper's rule, bit for bit.
+ActionPoints action_points(const Body& a, const Body& b, bool with_friction) {
+  if (!with_friction) return ActionPoints::more;
+  if (std::holds_alternative<HalfPlane>(a.shape)) return ActionPoints::b;
+  if (std::holds_alternative<HalfPlane>(b.shape)) return ActionPoints::a;
+  return ActionPoints::more;
+}
 }  // namespace
 
 bool PairGeometry::supported(const Body& a, const Body& b, GeometryMode mode,
@@ -36,17 +53,21 @@ bool PairGeometry::supported(const Body& a, const Body& b, GeometryMode mode,
 }
 
 PairGeometry::PairGeometry(const Body& a, const Body& b, GeometryMode mode,
-                           DetectionMode detection) {
+                           DetectionMode detection, bool with_friction) {
   std::string reason;
   if (!supported(a, b, mode, &reason)) throw std::invalid_argument(reason);
   if (mode == GeometryMode::outline || both_polygons(a, b)) {
     if (detection == DetectionMode::fast) {
-      convex_line_ = ConvexLineContact::make(a.shape, a.outline_points, b.shape, b.outline_points);
+      if (!with_friction) {
+        convex_line_ = ConvexLineContact::make(a.shape, a.outline_points, b.shape, b.outline_points);
+      }
       fast_.emplace(contact_outline(a.shape, a.outline_points),
                     contact_outline(b.shape, b.outline_points));
+      fast_->set_action_points(action_points(a, b, with_friction));
     } else {
       outline_.emplace(contact_outline(a.shape, a.outline_points),
                        contact_outline(b.shape, b.outline_points));
+      outline_->set_action_points(action_points(a, b, with_friction));
     }
   } else {
     exact_.emplace(a.shape, b.shape);

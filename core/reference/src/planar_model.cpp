@@ -164,6 +164,19 @@ void PlanarModel::add_point_force(int body, ConstVectorRef q, const Vec2& p_m,
   }
 }
 
+void PlanarModel::add_couple(int body, double torque_nm, Eigen::VectorXd& gen_force) const {
+  const ModelBody& b = bodies_[static_cast<std::size_t>(body)];
+  if (b.kind == Kind::pendulum) gen_force[b.coord] += torque_nm;
+  if (b.kind == Kind::free) gen_force[b.coord + 2] += torque_nm;
+}
+
+double PlanarModel::angular_velocity(int body, ConstVectorRef u) const {
+  const ModelBody& b = bodies_[static_cast<std::size_t>(body)];
+  if (b.kind == Kind::pendulum) return u[b.coord];
+  if (b.kind == Kind::free) return u[b.coord + 2];
+  return 0.0;
+}
+
 double PlanarModel::energy_j(ConstVectorRef q, ConstVectorRef u) const {
   // kinetic 1/2 u^T M u (M diagonal), potential -m g . c
   double e = 0.5 * (mass_.array() * u.array().square()).sum();

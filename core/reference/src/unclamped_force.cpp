@@ -6,6 +6,18 @@
 
 namespace pb {
 
+namespace {
+
+// B of F = A + B delta_dot, given A = F at delta_dot = 0
+double damping_given(const ContactLaw& law, double delta_m, double approach_speed_mps, double a) {
+  const double b_plus = contact_force_n(law, delta_m, 1.0, approach_speed_mps) - a;
+  if (b_plus > 0.0) return b_plus;
+  // B <= 0: the probe at +1 m/s may have been clamped, the one at -1 m/s is not
+  return a - contact_force_n(law, delta_m, -1.0, approach_speed_mps);
+}
+
+}  // namespace
+
 double unclamped_force_n(const ContactLaw& law, double delta_m, double delta_dot_mps,
                          double approach_speed_mps) {
   if (!(delta_m > 0.0)) {
@@ -18,13 +30,12 @@ double unclamped_force_n(const ContactLaw& law, double delta_m, double delta_dot
   }
   // F = A + B delta_dot; A is never clamped (the elastic part is >= 0)
   const double a = contact_force_n(law, delta_m, 0.0, approach_speed_mps);
-  const double b_plus = contact_force_n(law, delta_m, 1.0, approach_speed_mps) - a;
-  double b = b_plus;
-  if (!(b_plus > 0.0)) {
-    // B <= 0: the probe at +1 m/s may have been clamped, the one at -1 m/s is not
-    b = a - contact_force_n(law, delta_m, -1.0, approach_speed_mps);
-  }
-  return a + b * delta_dot_mps;
+  return a + damping_given(law, delta_m, approach_speed_mps, a) * delta_dot_mps;
+}
+
+double law_damping_ns_per_m(const ContactLaw& law, double delta_m, double approach_speed_mps) {
+  return damping_given(law, delta_m, approach_speed_mps,
+                       contact_force_n(law, delta_m, 0.0, approach_speed_mps));
 }
 
 }  // namespace pb

@@ -82,6 +82,29 @@ TEST(OdeContactMapping, SpreadLawSumsToTheLaw) {
   EXPECT_EQ(spread_law(1e4, 10.0, 0.0, 0.0, 0.0).stiffness_n_per_m, 1e4);
 }
 
+// A pair with friction: every pressed row gets the same implicit damping
+// c / n (so one CFM), and the rest of its spread share explicitly; worked by
+// hand for two contacts 3 and 1 mm deep (c = 10 N s/m): implicit 5 each,
+// explicit +2.5 and -2.5 (the shares 7.5 and 2.5 minus 5), summing to 0, so
+// the damping resultant stays c and its moment the spread law's. One contact:
+// the law itself, nothing explicit.
+TEST(OdeContactMapping, FaceRowsShareOneCfm) {
+  const FaceRow deep = face_row(1e4, 10.0, 0.003, 0.003, 0.004, 2);
+  const FaceRow shallow = face_row(1e4, 10.0, 0.003, 0.001, 0.004, 2);
+  EXPECT_EQ(deep.implicit_damping_ns_per_m, 5.0);
+  EXPECT_EQ(shallow.implicit_damping_ns_per_m, 5.0);
+  // quotients of short decimals: 1e-12 relative
+  EXPECT_NEAR(deep.explicit_damping_ns_per_m, 2.5, 1e-12 * 10.0);
+  EXPECT_NEAR(shallow.explicit_damping_ns_per_m, -2.5, 1e-12 * 10.0);
+  // the springs are the spread law's, so the pair's rows still sum to k delta
+  EXPECT_EQ(deep.stiffness_n_per_m, spread_law(1e4, 10.0, 0.003, 0.003, 0.004).stiffness_n_per_m);
+  EXPECT_EQ(soft_row(deep.stiffness_n_per_m, deep.implicit_damping_ns_per_m, 1e-4, true).cfm,
+            soft_row(shallow.stiffness_n_per_m, shallow.implicit_damping_ns_per_m, 1e-4, true).cfm);
+  const FaceRow one = face_row(1e4, 10.0, 0.002, 0.002, 0.002, 1);
+  EXPECT_EQ(one.implicit_damping_ns_per_m, 10.0);
+  EXPECT_EQ(one.explicit_damping_ns_per_m, 0.0);
+}
+
 // What ODE does with (ERP, CFM) on one contact row (ODE manual, "Soft
 // constraint"): the end-of-step separation speed u solves
 // u = ERP/h depth - CFM lambda with lambda >= 0 (clamped). Written here

@@ -127,6 +127,9 @@ class ContactDynamics final : public OdeSystem {
   // the friction forces of every pair that has friction and presses, added
   // to gen_force_ (slip first, then the stick solve on top of them)
   void add_friction();
+  // the couple of pair k's damping over a face (ContactGeometry::spread_m2),
+  // added to gen_force_; pairs with friction only (coulomb_friction.hpp)
+  void add_damping_couple(int k, const PairEvaluation& e);
 
   PlanarModel model_;
   std::vector<ContactPair> pairs_;

@@ -46,11 +46,17 @@ struct ContactGeometry {
   Vec2 normal = Vec2(0.0, 1.0);                             // unit, a -> b
   Vec2 point_a_m = Vec2::Zero();                            // m, world, on body a
   Vec2 point_b_m = Vec2::Zero();                            // m, world, on body b
+  // m^2: overlapping at several points (a face), the depth-weighted variance
+  // of those points' positions along the tangent about the line of action,
+  // sum_i d_i ((p_i - p) x n)^2 / sum_i d_i; 0 at one point. The law's
+  // damping spread over the points by depth (the weights that place the line
+  // of action) has a couple -c spread omega besides its force (coulomb_friction.hpp)
+  double spread_m2 = 0.0;
 
   [[nodiscard]] double penetration_m() const { return gap_m < 0.0 ? -gap_m : 0.0; }
   // the same contact seen with a and b exchanged
   [[nodiscard]] ContactGeometry swapped() const {
-    return ContactGeometry{gap_m, -normal, point_b_m, point_a_m};
+    return ContactGeometry{gap_m, -normal, point_b_m, point_a_m, spread_m2};
   }
 };
 

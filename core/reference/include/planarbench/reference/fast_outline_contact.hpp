@@ -79,6 +79,8 @@ class FastOutlineContactSearch {
  public:
   // outlines in their body frames, closed, counter-clockwise
   FastOutlineContactSearch(std::vector<Vec2> outline_a_m, std::vector<Vec2> outline_b_m);
+  // whose inside points place the line of action (outline_contact.hpp)
+  void set_action_points(ActionPoints rule) { action_points_ = rule; }
 
   [[nodiscard]] ContactGeometry evaluate(const Pose& pose_a, const Pose& pose_b);
 
@@ -175,6 +177,7 @@ class FastOutlineContactSearch {
   std::vector<PairEntry> pair_stack_;
   std::vector<NodeEntry> node_stack_;
   FastSearchWork work_;
+  ActionPoints action_points_ = ActionPoints::more;
 };
 
 }  // namespace pb

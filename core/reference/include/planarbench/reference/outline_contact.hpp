@@ -103,10 +103,18 @@ struct BoundaryHit {
 
 // The brute-force search of one pair, with its scratch space (no allocation
 // per evaluation).
+// Whose inside points place the line of action of two overlapping outlines
+// (their depth-weighted centroid, SPEC §1): the body with more of them (the
+// paper's rule, `more`), or always body a's / body b's (a pair with friction
+// on a half-plane: the half-plane's points sample a straight line at a spacing
+// set by its extent, the body's outline is its shape; pair_geometry.hpp)
+enum class ActionPoints { more, a, b };
+
 class OutlineContactSearch {
  public:
   // outlines in their body frames, closed, counter-clockwise
   OutlineContactSearch(std::vector<Vec2> outline_a_m, std::vector<Vec2> outline_b_m);
+  void set_action_points(ActionPoints rule) { action_points_ = rule; }
 
   [[nodiscard]] ContactGeometry evaluate(const Pose& pose_a, const Pose& pose_b);
   // the same on outlines already placed in the world
@@ -120,6 +128,7 @@ class OutlineContactSearch {
   std::vector<BoundaryHit> hits_a_;  // outline point i of a against b's boundary
   std::vector<BoundaryHit> hits_b_;
   std::vector<int> inside_ids_;  // scratch: inside point indices of one body
+  ActionPoints action_points_ = ActionPoints::more;
 };
 
 // The paper's two stages taken literally, for comparison only: the closest

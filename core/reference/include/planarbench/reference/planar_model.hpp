@@ -60,6 +60,10 @@ class PlanarModel {
   // adds the generalised force of world force f_n applied at world point p_m
   void add_point_force(int body, ConstVectorRef q, const Vec2& p_m, const Vec2& f_n,
                        Eigen::VectorXd& gen_force) const;
+  // adds the generalised force of a couple of torque_nm (N m, counter-clockwise)
+  void add_couple(int body, double torque_nm, Eigen::VectorXd& gen_force) const;
+  // rad/s, counter-clockwise (0 for a fixed body)
+  [[nodiscard]] double angular_velocity(int body, ConstVectorRef u) const;
   // the diagonal of the constant mass matrix (kg, kg m^2)
   [[nodiscard]] const Eigen::VectorXd& mass_diagonal() const { return mass_; }
 

@@ -21,4 +21,11 @@ namespace pb {
 [[nodiscard]] double unclamped_force_n(const ContactLaw& law, double delta_m, double delta_dot_mps,
                                        double approach_speed_mps);
 
+// N s/m: B of F = A + B delta_dot at penetration delta_m > 0, the law's
+// damping coefficient there (Kelvin-Voigt c, or c ramped by depth;
+// Lankarani-Nikravesh K delta^n 3 (1 - e^2) / (4 delta_dot^-)); every law of
+// the case format is affine in delta_dot
+[[nodiscard]] double law_damping_ns_per_m(const ContactLaw& law, double delta_m,
+                                          double approach_speed_mps);
+
 }  // namespace pb
