@@ -199,6 +199,16 @@ const std::vector<CampaignMetric>& campaign_metrics() {
        "steady acceleration along the line of the body on the case's first half-plane pair: "
        "least-squares slope of its speed over the run's second half (0 while friction holds "
        "it; the friction curve, SPEC §7)"},
+      {"hold_drift_m", "m",
+       "SPEC §7's hold_drift_m of the run against its truth (the drift of the material contact "
+       "point while the truth holds the body at rest), where the truth holds: the block family "
+       "(campaigns/block_family.toml)"},
+      {"slide_acceleration_error", "1",
+       "relative error of slide_acceleration_mps2 against the truth's closed form, where the "
+       "truth slides at a constant acceleration"},
+      {"stop_time_error", "1",
+       "relative error of stop_time_s against the truth's closed form, where the truth slides "
+       "and stops"},
       {"trace", "m",
        "positions of every moving body at trace_points times evenly over the run (not a "
        "column: trace_time_s and trace_position_m)"},
@@ -214,7 +224,11 @@ std::int64_t CampaignPlan::size() const {
 
 bool CampaignPlan::needs_truth() const {
   return std::any_of(metrics.begin(), metrics.end(),
-                     [](const CampaignMetric& m) { return m.name == "position_error_m"; });
+                     [](const CampaignMetric& m) {
+                       return m.name == "position_error_m" || m.name == "hold_drift_m" ||
+                              m.name == "slide_acceleration_error" ||
+                              m.name == "stop_time_error";
+                     });
 }
 
 CampaignPlan::RunRef decode_run(std::int64_t id, std::size_t engines,
@@ -342,7 +356,7 @@ CampaignTable campaign_header(const CampaignPlan& plan) {
     c.duration_s = cp.c.duration_s;
     const TruthPlan truth = truth_for(cp.c);
     c.truth = plan.needs_truth() ? truth.label : "none";
-    c.truth_note = plan.needs_truth() ? truth.note : "position_error_m not recorded";
+    c.truth_note = plan.needs_truth() ? truth.note : "no metric against the truth recorded";
     c.moving_bodies = cp.moving_bodies;
     t.trace_bodies = std::max(t.trace_bodies, static_cast<int>(cp.moving_bodies.size()));
     t.cases.push_back(std::move(c));

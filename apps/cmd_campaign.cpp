@@ -155,6 +155,20 @@ std::size_t sample_at(const BodyTrajectory& b, double t) {
                                b.time_s.empty() ? 0 : b.time_s.size() - 1);
 }
 
+// a SPEC §7 friction metric's error against the truth (friction_metrics.hpp):
+// hold_drift_m as it is (m), the others' relative errors; NaN where the
+// truth has no such figure
+double friction_error(const Case& c, const RunResult& r, const RunResult& truth,
+                      const std::string& campaign_metric) {
+  const std::string name = campaign_metric == "slide_acceleration_error" ? "slide_acceleration_mps2"
+                           : campaign_metric == "stop_time_error"        ? "stop_time_s"
+                                                                         : campaign_metric;
+  for (const MetricValue& m : friction_metrics(c, r, truth)) {
+    if (m.metric == name) return m.error;
+  }
+  return std::nan("");
+}
+
 // the metrics of one run, in the plan's order
 std::vector<double> metrics_of(const CampaignPlan& plan, const Case& c, const RunResult& r,
                                const RunResult* truth) {
@@ -178,6 +192,9 @@ std::vector<double> metrics_of(const CampaignPlan& plan, const Case& c, const Ru
       v = first ? first->impulse_ns : nan;
     } else if (m.name == "slide_acceleration_mps2") {
       v = steady_slide_acceleration_mps2(c, r);
+    } else if (m.name == "hold_drift_m" || m.name == "slide_acceleration_error" ||
+               m.name == "stop_time_error") {
+      v = truth != nullptr ? friction_error(c, r, *truth, m.name) : nan;
     } else if (m.name == "max_penetration_m") {
       if (ok && !r.events.empty()) {
         v = 0.0;

@@ -18,7 +18,7 @@ struct ReportOptionsCli {
   std::string out;
   std::string thresholds;
   std::string sweep;
-  std::string campaign;
+  std::vector<std::string> campaigns;
   std::string impacts;
   bool quiet = false;
 };
@@ -31,11 +31,11 @@ namespace fs = std::filesystem;
 // figures/*.svg is held to it: those already there (a link among them would
 // be followed) and any input named like one.
 void check_report_spares_inputs(const ReportOptionsCli& opt) {
-  const std::vector<NamedInput> inputs = {{"the results file", opt.results},
-                                          {"--thresholds", opt.thresholds},
-                                          {"--sweep", opt.sweep},
-                                          {"--campaign", opt.campaign},
-                                          {"--impacts", opt.impacts}};
+  std::vector<NamedInput> inputs = {{"the results file", opt.results},
+                                    {"--thresholds", opt.thresholds},
+                                    {"--sweep", opt.sweep},
+                                    {"--impacts", opt.impacts}};
+  for (const auto& c : opt.campaigns) inputs.push_back({"--campaign", c});
   const fs::path dir = opt.out;
   const fs::path figures = dir / "figures";
   std::vector<fs::path> outputs = {dir / "report.html", dir / "report.md"};
@@ -61,7 +61,7 @@ int run_report(const ReportOptionsCli& opt) {
   options.out_dir = opt.out;
   options.thresholds = opt.thresholds;
   options.sweep = opt.sweep;
-  options.campaign = opt.campaign;
+  options.campaigns.assign(opt.campaigns.begin(), opt.campaigns.end());
   options.impacts = opt.impacts;
   // a misspelt case or engine would otherwise be a check silently never made
   options.check_thresholds = [&opt](const std::vector<Threshold>& t, const ResultsFile& r) {
@@ -118,10 +118,13 @@ Action add_report_command(CLI::App& app) {
                   "(log-log error vs wall time per case, time to reach 1e-3 and 1e-5 m, cost per "
                   "simulated second)")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--campaign", opt->campaign,
-                  "A campaign's file (`planarbench campaign merge`) beside the results: adds its "
-                  "campaign section, and the friction curve when it sweeps a pair's friction and "
-                  "records slide_acceleration_mps2 (campaigns/friction_curve.toml)")
+  cmd->add_option("--campaign", opt->campaigns,
+                  "A campaign's file (`planarbench campaign merge`) beside the results; repeatable. "
+                  "The first adds its campaign section; the friction section draws the friction "
+                  "curve from one that sweeps a pair's friction and records "
+                  "slide_acceleration_mps2 (campaigns/friction_curve.toml), and the block family "
+                  "from one that records hold_drift_m, slide_acceleration_error or "
+                  "stop_time_error (campaigns/block_family.toml)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--impacts", opt->impacts,
                   "A file of `planarbench impacts fit` or `impacts score`: adds the measured-impacts "

@@ -5,6 +5,7 @@
 #   results/results.h5          the results file (HDF5, SPEC §5)
 #   results/sweep.h5            the work-precision sweep (HDF5, apps/cmd_sweep.cpp)
 #   results/friction_curve.h5   the friction curve (campaigns/friction_curve.toml)
+#   results/block_family.h5     the block family (campaigns/block_family.toml)
 #   results/impacts_fit.h5      measured impacts: every engine fitted, cross-validated
 #                               (`planarbench impacts fit`), when the data file exists:
 #                               $PB_IMPACTS_DATA, default ../shared/data/mcube/ellipse_impacts_train.mat
@@ -33,6 +34,10 @@ fi
 rm -rf results/friction_curve
 "$PB" campaign run campaigns/friction_curve.toml --out results/friction_curve --jobs "$(nproc)" --quiet
 "$PB" campaign merge results/friction_curve --out results/friction_curve.h5 --quiet
+# the block family (issue 30): 38 blocks x 4 engines, ~5 s
+rm -rf results/block_family
+"$PB" campaign run campaigns/block_family.toml --out results/block_family --jobs "$(nproc)" --quiet
+"$PB" campaign merge results/block_family --out results/block_family.h5 --quiet
 # measured impacts (issue 23): the dataset is never committed (no licence);
 # the report reads it where the user has it
 impacts_args=()
@@ -46,7 +51,7 @@ if [ "${PB_SKIP_IMPACTS:-0}" != 1 ]; then
   fi
 fi
 "$PB" report results/results.h5 "${sweep_args[@]}" --campaign results/friction_curve.h5 \
-  "${impacts_args[@]}" --thresholds cases/thresholds.toml --out results/report
+  --campaign results/block_family.h5 "${impacts_args[@]}" --thresholds cases/thresholds.toml --out results/report
 "$PB" check --thresholds cases/thresholds.toml results/results.h5 || rc=$((rc > 0 ? rc : $?))
 echo "report: results/report/report.html and results/report/report.md"
 exit "$rc"

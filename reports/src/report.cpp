@@ -134,16 +134,22 @@ ReportSummary write_report(const ReportOptions& options) {
     }
     report.impacts = internal::impacts_section(*impacts.campaign, options.impacts.string());
   }
-  // a campaign beside the results: its section (unless the results are one)
-  // and the friction curve
-  const ResultsFile campaign =
-      options.campaign.empty() ? ResultsFile{} : read_results_file(options.campaign);
-  if (!options.campaign.empty() && (!campaign.campaign || campaign.campaign->kind != "campaign")) {
-    throw InputError("--campaign", 0, options.campaign.string(),
-                     "holds no campaign table; give a file of `planarbench campaign merge`");
+  // campaigns beside the results: the first's section (unless the results
+  // are one), and what the friction section draws from them
+  std::vector<ResultsFile> campaign_files;
+  std::vector<internal::NamedCampaign> campaigns;
+  campaign_files.reserve(options.campaigns.size());
+  for (const auto& file : options.campaigns) {
+    campaign_files.push_back(read_results_file(file));
+    const ResultsFile& f = campaign_files.back();
+    if (!f.campaign || f.campaign->kind != "campaign") {
+      throw InputError("--campaign", 0, file.string(),
+                       "holds no campaign table; give a file of `planarbench campaign merge`");
+    }
+    campaigns.push_back({&*f.campaign, file.string()});
   }
-  if (campaign.campaign && report.campaign.file.empty()) {
-    report.campaign = internal::campaign_section(*campaign.campaign, options.campaign.string());
+  if (!campaigns.empty() && report.campaign.file.empty()) {
+    report.campaign = internal::campaign_section(*campaigns.front().table, campaigns.front().file);
   }
   internal::FigureLimits limits;
   limits.max_outside = options.max_points_outside_contact;
@@ -173,8 +179,7 @@ ReportSummary write_report(const ReportOptions& options) {
                                                        internal::not_expressed(r->mapping)});
     }
   }
-  report.friction = internal::friction_section(
-      cases, results, campaign.campaign ? &*campaign.campaign : nullptr, options.campaign.string());
+  report.friction = internal::friction_section(cases, results, campaigns);
   const auto outcomes = check_thresholds(thresholds, metrics, invalid);
   std::size_t failed = 0;
   std::size_t known = 0;

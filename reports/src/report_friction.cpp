@@ -162,22 +162,132 @@ void add_curve(const CampaignTable& t, const std::string& file, FrictionSection&
   }
 }
 
+// the family's metrics: the errors a campaign records against the closed form
+struct FamilyMetric {
+  const char* name;     // campaign metric
+  const char* kind;     // what the truth does
+  const char* y_label;
+  bool against_v0;      // x: the throw's speed, else tan(theta) / mu
+};
+constexpr FamilyMetric kFamilyMetrics[] = {
+    {"hold_drift_m", "held", "|drift| of the contact point (m)", false},
+    {"slide_acceleration_error", "sliding", "|a - a_closed| / a_closed", false},
+    {"stop_time_error", "stopping", "|t_stop - v0 / (mu g)| / (v0 / (mu g))", true},
+};
+
+// the block family from a campaign recording its friction errors: per
+// metric a log plot of each engine's error per member, and a table per
+// engine of the members judged and the worst error
+bool add_family(const CampaignTable& t, const std::string& file, FrictionSection& s) {
+  std::vector<std::size_t> metric_index;
+  for (const FamilyMetric& fm : kFamilyMetrics) {
+    std::size_t k = t.metrics.size();
+    for (std::size_t m = 0; m < t.metrics.size(); ++m) {
+      if (t.metrics[m].name == fm.name) k = m;
+    }
+    metric_index.push_back(k);
+  }
+  if (std::all_of(metric_index.begin(), metric_index.end(),
+                  [&](std::size_t k) { return k == t.metrics.size(); })) {
+    return false;
+  }
+  // each member's x: tan(theta) / mu of its first pair, or its body's speed
+  std::map<std::string, std::pair<double, double>> x_of;  // case -> (tan / mu, v0)
+  for (const CampaignCase& cc : t.cases) {
+    SettingsOverrides keys;
+    for (const auto& [k, v] : cc.overrides) {
+      if (is_case_key(k)) keys.set(k, v, SettingSource{"campaign", 0});
+    }
+    const Case c = parse_case(cc.text, cc.path, cc.name, keys);
+    const ContactPair* p = c.first_pair_with_friction();
+    double speed = 0.0;
+    for (const Body& b : c.bodies) speed = std::max(speed, b.velocity_mps.norm());
+    x_of[cc.name] = {p != nullptr ? tan_theta(c) / p->friction : std::nan(""), speed};
+  }
+  s.family.id = "block-family";
+  s.family.title = "Block family: members and worst error against the closed form, per engine";
+  s.family.note = fmt::format(
+      "From {}: every block of the campaign's cases at rest in the static pose of its first "
+      "phase; held: the drift of its contact point (m); sliding and stopping: the relative error "
+      "of the steady acceleration and of the stop time. A member an engine does not support or "
+      "a run that failed is counted apart.",
+      file);
+  s.family.columns = {"engine"};
+  for (const FamilyMetric& fm : kFamilyMetrics) {
+    s.family.columns.push_back(fmt::format("{}: members", fm.kind));
+    s.family.columns.push_back(fmt::format("{}: worst", fm.kind));
+  }
+  s.family.columns.push_back("not run");
+  std::vector<std::vector<std::string>> rows(t.engines.size());
+  std::vector<std::size_t> not_run(t.engines.size(), 0);
+  for (std::size_t e = 0; e < t.engines.size(); ++e) {
+    for (const auto& run : t.runs) {
+      if (run.engine == t.engines[e] && run.status != RunStatus::ok) ++not_run[e];
+    }
+    rows[e].push_back(t.engines[e]);
+  }
+  for (std::size_t f = 0; f < std::size(kFamilyMetrics); ++f) {
+    const FamilyMetric& fm = kFamilyMetrics[f];
+    const std::size_t k = metric_index[f];
+    LinePlot plot;
+    plot.title = fmt::format("Block family, {}: {} per member", fm.kind, fm.name);
+    plot.x_label = fm.against_v0 ? "v0 (m/s)" : "tan(theta) / mu";
+    plot.y_label = fm.y_label;
+    plot.y_log = true;
+    for (std::size_t e = 0; e < t.engines.size(); ++e) {
+      LinePlot::Line line{t.engines[e], engine_colour(t.engines[e], e), {}, {}, {}, {}};
+      line.scatter = true;
+      std::size_t members = 0;
+      double worst = 0.0;
+      for (const auto& run : t.runs) {
+        if (k == t.metrics.size() || run.engine != t.engines[e] || run.status != RunStatus::ok) {
+          continue;
+        }
+        const double v = run.metrics[k];
+        if (!std::isfinite(v)) continue;
+        const auto& [ratio, v0] = x_of[run.case_name];
+        ++members;
+        worst = std::max(worst, std::abs(v));
+        line.x.push_back(fm.against_v0 ? v0 : ratio);
+        line.y.push_back(std::max(std::abs(v), kDriftFloor_m));
+      }
+      rows[e].push_back(std::to_string(members));
+      rows[e].push_back(members > 0 ? fmt::format("{:.3g}", worst) : "-");
+      if (!line.x.empty()) plot.lines.push_back(std::move(line));
+    }
+    if (!plot.lines.empty()) {
+      s.figures.push_back({file_safe(std::string("block_family_") + fm.name), plot.title,
+                           line_plot_svg(plot)});
+    }
+  }
+  for (std::size_t e = 0; e < t.engines.size(); ++e) {
+    rows[e].push_back(std::to_string(not_run[e]));
+    s.family.rows.push_back(std::move(rows[e]));
+    s.family.row_status.emplace_back("");
+  }
+  return true;
+}
+
 }  // namespace
 
 FrictionSection friction_section(const std::vector<Case>& cases, const ResultsFile& results,
-                                 const CampaignTable* curve, const std::string& curve_file) {
+                                 const std::vector<NamedCampaign>& campaigns) {
   FrictionSection s;
   for (std::size_t i = 0; i < cases.size() && i < results.cases.size(); ++i) {
     if (cases[i].first_pair_with_friction() != nullptr) add_hold_figure(cases[i], results.cases[i], s);
   }
-  if (curve != nullptr) add_curve(*curve, curve_file, s);
+  for (const NamedCampaign& c : campaigns) {
+    if (!add_family(*c.table, c.file, s)) add_curve(*c.table, c.file, s);
+  }
   if (!s.figures.empty()) {
     s.note =
         "Coulomb friction (SPEC §7): how far each engine lets a body that friction must hold "
         "drift (its contact point's displacement along the incline, log scale; values below "
         "1e-12 m drawn at 1e-12 m), and the friction curve: the steady acceleration of a block "
         "on an incline against tan(theta) / mu, where the closed form turns from holding (0) to "
-        "sliding at 1.0. Every friction metric is in the metrics table (hold_drift_m, "
+        "sliding at 1.0; with the block family (campaigns/block_family.toml), each engine's "
+        "error on every block of it against tan(theta) / mu or the throw's speed (values below "
+        "1e-12 drawn at 1e-12). Every friction metric is in the metrics table (hold_drift_m, "
         "creep_speed_mps, slide_acceleration_mps2, ...); each engine's friction model and "
         "settings are in its mapping.";
   }

@@ -7,7 +7,11 @@
 //    each engine's steady acceleration against tan(theta) / mu, with the
 //    closed form a = g (sin(theta) - mu cos(theta)) where tan(theta) > mu, 0
 //    where it holds: the stick-slip threshold at 1.0;
-//  - a table of the curve: per point, the closed form and each engine's value.
+//  - a table of the curve: per point, the closed form and each engine's value;
+//  - the block family (issue 30), from a campaign that records hold_drift_m,
+//    slide_acceleration_error or stop_time_error (campaigns/block_family.toml):
+//    each engine's error per member against tan(theta) / mu (held, sliding)
+//    or v0 (stopping), log scale, and a table per engine: members, worst error.
 #pragma once
 
 #include <vector>
@@ -19,11 +23,17 @@
 
 namespace pb::internal {
 
-// cases and results: the report's (index-aligned); curve: a campaign table
-// or nullptr. Empty (no figure) when neither has anything of friction.
+// a campaign table and the file it came from
+struct NamedCampaign {
+  const CampaignTable* table = nullptr;
+  std::string file;
+};
+
+// cases and results: the report's (index-aligned); campaigns: the tables
+// beside them (the curve's and the family's found among them). Empty (no
+// figure) when none has anything of friction.
 [[nodiscard]] FrictionSection friction_section(const std::vector<Case>& cases,
                                                const ResultsFile& results,
-                                               const CampaignTable* curve,
-                                               const std::string& curve_file);
+                                               const std::vector<NamedCampaign>& campaigns);
 
 }  // namespace pb::internal

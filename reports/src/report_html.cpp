@@ -198,7 +198,8 @@ nlohmann::json report_data_json(const Report& report) {
   data["friction"] = {{"note", report.friction.note},
                       {"curve_file", report.friction.curve_file},
                       {"figures", friction_figures},
-                      {"curve", table_json(report.friction.curve)}};
+                      {"curve", table_json(report.friction.curve)},
+                      {"family", table_json(report.friction.family)}};
 
   // the measured-impacts section: figures (SVG text) and tables
   nlohmann::json impact_figures = nlohmann::json::array();

@@ -160,6 +160,9 @@ std::string friction_markdown(const Report& report) {
   if (!f.curve.rows.empty()) {
     md += "### " + f.curve.title + "\n\n" + f.curve.note + "\n\n" + markdown_table(f.curve) + "\n";
   }
+  if (!f.family.rows.empty()) {
+    md += "### " + f.family.title + "\n\n" + f.family.note + "\n\n" + markdown_table(f.family) + "\n";
+  }
   return md;
 }
 

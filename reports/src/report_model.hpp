@@ -142,6 +142,7 @@ struct FrictionSection {
   std::string curve_file;  // the campaign file of the friction curve, "" when none
   std::vector<CampaignFigure> figures;
   Table curve;
+  Table family;  // the block family's table, empty when none (report_friction.hpp)
 };
 
 // the measured-impacts section (report_impacts.hpp)

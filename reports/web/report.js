@@ -487,6 +487,7 @@
       sec.appendChild(el('div', { class: 'wp-plot', id: 'friction-' + slug(f.id) }, svgNode(f.svg)));
     }
     if (fr.curve && fr.curve.rows.length) renderTable(fr.curve, sec, 'h3');
+    if (fr.family && fr.family.rows.length) renderTable(fr.family, sec, 'h3');
     main.appendChild(sec);
   }
 

@@ -201,6 +201,56 @@ TEST(CmdCampaign, MergedFileReadsWithH5pyAndHoldsEveryRunInOrder) {
   EXPECT_EQ(j["trace_starts_at_initial_position"], true);
 }
 
+// The block family's metrics (issue 30), read with h5py: each run's SPEC §7
+// friction error against its own case's closed form, NaN where the truth has
+// no such figure. Two members on the reference and on the analytic engine
+// itself: a held block (hold_drift_m, the drift of its contact point) and a
+// thrown one (stop_time_error, relative). The analytic engine is its own
+// truth: exactly 0; the reference holds to the state's error of rk45 at
+// rtol 1e-10 over <= 1e4 steps (1e-6 relative, positions within 0.1 m of the
+// origin: 1e-7 m) and stops within 1e-6 of t_stop
+// (tests/reference/friction_on_faces_test.cpp derives both).
+TEST(CmdCampaign, TheBlockFamilysMetricsAreFrictionErrorsAgainstTheTruth) {
+  const fs::path dir = fresh_dir("family");
+  const std::string family = std::string(PB_SOURCE_DIR) + "/cases/family/";
+  const fs::path toml = campaign_file(dir, "[campaign]\ncases = [\"" + family +
+                                               "hold_a1_s25_r0.98.toml\", \"" + family +
+                                               "stop_a1_v5_mu0.6.toml\"]\n"
+                                               "engines = [\"analytic\", \"reference\"]\n"
+                                               "metrics = [\"hold_drift_m\", \"stop_time_error\", "
+                                               "\"slide_acceleration_error\"]\n");
+  const Finished r = campaign({"run", toml.string(), "--out", (dir / "parts").string(), "-q"});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  const fs::path merged = dir / "family.h5";
+  ASSERT_EQ(campaign({"merge", (dir / "parts").string(), "--out", merged.string(), "-q"}).exit.code, 0);
+  const Finished py = run_shell(std::string(PB_PYTHON) + " -c '"
+                                "import h5py, json, sys; g = h5py.File(sys.argv[1])[\"campaign/runs\"]; "
+                                "d = lambda b: b.decode() if isinstance(b, bytes) else b; "
+                                "n = lambda x: None if x != x else float(x); "
+                                "print(json.dumps([[d(c), d(e)] + [n(x) for x in "
+                                "(g[\"metric/hold_drift_m\"][i], g[\"metric/stop_time_error\"][i], "
+                                "g[\"metric/slide_acceleration_error\"][i])] for i, (c, e) in "
+                                "enumerate(zip(g[\"case\"][:], g[\"engine\"][:]))]), file=sys.stderr)' " +
+                                merged.string());
+  ASSERT_EQ(py.exit.code, 0) << py.err;
+  const auto rows = nlohmann::json::parse(py.err);
+  ASSERT_EQ(rows.size(), 4u);
+  for (const auto& row : rows) {
+    // NaN (no such figure in the truth) comes through JSON as null
+    const std::string c = row[0], e = row[1];
+    EXPECT_TRUE(row[4].is_null()) << c << " " << e;  // neither truth slides steadily
+    if (c.starts_with("hold")) {
+      EXPECT_TRUE(row[3].is_null()) << e;
+      ASSERT_FALSE(row[2].is_null()) << e;
+      EXPECT_LE(row[2].get<double>(), e == "analytic" ? 0.0 : 1e-7) << e;
+    } else {
+      EXPECT_TRUE(row[2].is_null()) << e;
+      ASSERT_FALSE(row[3].is_null()) << e;
+      EXPECT_LE(row[3].get<double>(), e == "analytic" ? 0.0 : 1e-6) << e;
+    }
+  }
+}
+
 TEST(CmdCampaign, TheReportOfACampaignHasItsSection) {
   const fs::path dir = fresh_dir("report");
   const Finished r = run_planarbench({"report", one_shard_file().string(), "--out", (dir / "r").string()});

@@ -82,6 +82,10 @@ run(['run', '--case', CASES.join(','), '--engine', ENGINES.join(','), '--out', r
 const frictionCurve = path.join(path.resolve(args['web-dir']), '..', '..', 'campaigns', 'friction_curve.toml');
 run(['campaign', 'run', frictionCurve, '--out', path.join(work, 'friction_curve'), '--quiet'], [0]);
 run(['campaign', 'merge', path.join(work, 'friction_curve'), '--out', path.join(work, 'friction_curve.h5'), '--quiet'], [0]);
+// the block family (issue 30): its three figures and table in the friction section
+const blockFamily = path.join(path.resolve(args['web-dir']), '..', '..', 'campaigns', 'block_family.toml');
+run(['campaign', 'run', blockFamily, '--out', path.join(work, 'block_family'), '--jobs', '2', '--quiet'], [0]);
+run(['campaign', 'merge', path.join(work, 'block_family'), '--out', path.join(work, 'block_family.h5'), '--quiet'], [0]);
 // measured impacts (issue 23): a small file written by scipy (tests/impacts/
 // write_mat.py), fitted on Box2D (the cheapest engine), beside the results
 const impactsMat = path.join(work, 'impacts.mat');
@@ -90,14 +94,16 @@ const writeMat = spawnSync('/usr/bin/python3', [path.join(path.resolve(args['web
 if (writeMat.status !== 0) fatal(`write_mat.py failed: ${writeMat.stderr}`);
 run(['impacts', 'fit', '--data', impactsMat, '--engine', 'box2d', '--folds', '2', '--max-evaluations', '3',
   '--out', path.join(work, 'impacts_fit.h5'), '--quiet'], [0]);
-run(['report', results, '--campaign', path.join(work, 'friction_curve.h5'), '--impacts', path.join(work, 'impacts_fit.h5'),
+run(['report', results, '--campaign', path.join(work, 'friction_curve.h5'),
+  '--campaign', path.join(work, 'block_family.h5'), '--impacts', path.join(work, 'impacts_fit.h5'),
   '--out', reportDir], [0]);
 const reportMd = fs.readFileSync(path.join(reportDir, 'report.md'), 'utf8');
 const frictionStart = reportMd.indexOf('## Friction');
 const frictionEnd = reportMd.indexOf('\n## ', frictionStart + 1);
 const frictionSection = reportMd.slice(frictionStart, frictionEnd < 0 ? undefined : frictionEnd);
 const frictionFigures = (frictionSection.match(/!\[[^\]]*\]\(figures\/[^)]+\.svg\)/g) || []).length;
-check(frictionFigures === 2, `report.md's friction section has 2 figures (block_hold's drift, the friction curve): ${frictionFigures}`);
+check(frictionFigures === 5, `report.md's friction section has 5 figures (block_hold's drift, the friction curve, the block family's three): ${frictionFigures}`);
+check(frictionSection.includes('### Block family'), "report.md's friction section has the block family's table");
 const html = path.join(reportDir, 'report.html');
 check(fs.existsSync(html), 'report.html written');
 
@@ -266,8 +272,10 @@ try {
   // the friction section (issue 22): its two figures drawn, the curve's 11 points tabulated
   const frictionPlots = await page.locator('#friction .wp-plot svg').count();
   check(frictionPlots === frictionFigures, `friction section draws its ${frictionFigures} figures: ${frictionPlots}`);
-  const curveRows = await page.locator('#friction table tbody tr').count();
+  const curveRows = await page.locator('#friction table').first().locator('tbody tr').count();
   check(curveRows === 11, `friction curve table has a row per tan(theta) / mu from 0.5 to 1.5: ${curveRows}`);
+  const familyRows = await page.locator('#friction table').nth(1).locator('tbody tr').count();
+  check(familyRows === 4, `block family table has a row per engine of the campaign: ${familyRows}`);
 
   // the measured-impacts section (issue 23): its convention, models and fits
   // tables, its four figures (the CDF of eps, predicted against measured x', y', theta')
@@ -309,7 +317,7 @@ try {
     // the friction figures fit the width and are drawn (a box with an area)
     const friction = await page.evaluate(() => [...document.querySelectorAll('#friction .wp-plot svg')]
       .map((svg) => { const b = svg.getBoundingClientRect(); return [b.width, b.height, b.right]; }));
-    check(friction.length === 2 && friction.every(([w, h, right]) => w > 100 && h > 50 && right <= layout.innerWidth),
+    check(friction.length === 5 && friction.every(([w, h, right]) => w > 100 && h > 50 && right <= layout.innerWidth),
       `${size}: friction figures drawn within the width (${JSON.stringify(friction.map((f) => f.map(Math.round)))})`);
     check(layout.top !== null && layout.top >= 0 && layout.top < layout.innerHeight,
       `${size}: the verdict starts in the first screen (top at ${layout.top} px)`);

@@ -23,11 +23,12 @@ struct ReportOptions {
   // sweep file written by `planarbench sweep`: adds the work-precision section;
   // empty: none (one of results and sweep must be given)
   std::filesystem::path sweep;
-  // a campaign's results file (`planarbench campaign merge`) beside the
-  // results: its campaign section, and the friction curve when it sweeps a
-  // pair's friction and records slide_acceleration_mps2
-  // (campaigns/friction_curve.toml); empty: none
-  std::filesystem::path campaign;
+  // campaigns' results files (`planarbench campaign merge`) beside the
+  // results: the first's campaign section; the friction curve from one that
+  // sweeps a pair's friction and records slide_acceleration_mps2
+  // (campaigns/friction_curve.toml), the block family from one that records
+  // its friction errors (campaigns/block_family.toml)
+  std::vector<std::filesystem::path> campaigns;
   // a file of `planarbench impacts fit` or `impacts score`: adds the
   // measured-impacts section (such a file given as `results` does too); empty: none
   std::filesystem::path impacts;
