@@ -203,6 +203,9 @@ const std::vector<CampaignMetric>& campaign_metrics() {
        "SPEC §7's hold_drift_m of the run against its truth (the drift of the material contact "
        "point while the truth holds the body at rest), where the truth holds: the block family "
        "(campaigns/block_family.toml)"},
+      {"creep_speed_mps", "m/s",
+       "SPEC §7's creep_speed_mps of the run against its truth (the drift's mean rate over the "
+       "hold's second half), where the truth holds"},
       {"slide_acceleration_error", "1",
        "relative error of slide_acceleration_mps2 against the truth's closed form, where the "
        "truth slides at a constant acceleration"},
@@ -226,6 +229,7 @@ bool CampaignPlan::needs_truth() const {
   return std::any_of(metrics.begin(), metrics.end(),
                      [](const CampaignMetric& m) {
                        return m.name == "position_error_m" || m.name == "hold_drift_m" ||
+                              m.name == "creep_speed_mps" ||
                               m.name == "slide_acceleration_error" ||
                               m.name == "stop_time_error";
                      });

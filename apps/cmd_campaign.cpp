@@ -156,7 +156,7 @@ std::size_t sample_at(const BodyTrajectory& b, double t) {
 }
 
 // a SPEC §7 friction metric's error against the truth (friction_metrics.hpp):
-// hold_drift_m as it is (m), the others' relative errors; NaN where the
+// hold_drift_m and creep_speed_mps as they are, the others' relative errors; NaN where the
 // truth has no such figure
 double friction_error(const Case& c, const RunResult& r, const RunResult& truth,
                       const std::string& campaign_metric) {
@@ -192,7 +192,8 @@ std::vector<double> metrics_of(const CampaignPlan& plan, const Case& c, const Ru
       v = first ? first->impulse_ns : nan;
     } else if (m.name == "slide_acceleration_mps2") {
       v = steady_slide_acceleration_mps2(c, r);
-    } else if (m.name == "hold_drift_m" || m.name == "slide_acceleration_error" ||
+    } else if (m.name == "hold_drift_m" || m.name == "creep_speed_mps" ||
+               m.name == "slide_acceleration_error" ||
                m.name == "stop_time_error") {
       v = truth != nullptr ? friction_error(c, r, *truth, m.name) : nan;
     } else if (m.name == "max_penetration_m") {

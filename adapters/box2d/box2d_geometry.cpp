@@ -57,39 +57,47 @@ b2FixtureDef base_fixture_def(const FixtureOptions& o) {
 // one convex b2PolygonShape per fan piece. Box2D must keep every vertex, and
 // Debian's libbox2d keeps its asserts: a piece it would weld or find
 // degenerate aborts inside b2PolygonShape::Set, so it is checked first.
+// why Box2D cannot take fan piece k of a body as a b2PolygonShape, or ""
+std::string piece_error(const std::vector<Vec2>& piece, std::size_t k, const std::string& body_name) {
+  const double weld_m = 0.5 * static_cast<double>(b2_linearSlop);  // b2PolygonShape::Set
+  const int n = static_cast<int>(piece.size());
+  double closest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      closest = std::min(
+          closest, (piece[static_cast<std::size_t>(i)] - piece[static_cast<std::size_t>(j)]).norm());
+    }
+  }
+  double twice_area = 0.0;  // m^2
+  for (int i = 0; i < n; ++i) {
+    twice_area +=
+        cross(piece[static_cast<std::size_t>(i)], piece[static_cast<std::size_t>((i + 1) % n)]);
+  }
+  if (n > b2_maxPolygonVertices || !(closest > 1.01 * weld_m) || !is_convex_ccw(piece)) {
+    return fmt::format(
+        "body '{}': fan piece {} has vertices {:.3g} m apart; Box2D welds vertices closer than "
+        "0.5 b2_linearSlop = {} m (b2PolygonShape::Set): use fewer outline_points, or a body "
+        "thicker than Box2D's skin (2 x b2_polygonRadius = {} m), which its pieces are inset by",
+        body_name, k, closest, weld_m, 2.0 * skin_m());
+  }
+  // b2PolygonShape's centroid asserts an area above b2_epsilon (float epsilon)
+  if (!(0.5 * twice_area > 10.0 * static_cast<double>(b2_epsilon))) {
+    return fmt::format("body '{}': fan piece {} has an area of {:.3g} m^2, below what "
+                       "Box2D accepts (b2_epsilon); the body is too small for Box2D",
+                       body_name, k, 0.5 * twice_area);
+  }
+  return {};
+}
+
 int add_polygon_pieces(b2Body& body, const std::vector<std::vector<Vec2>>& pieces,
                        const FixtureOptions& o, const std::string& body_name) {
   b2FixtureDef def = base_fixture_def(o);
   b2Vec2 vertices[b2_maxPolygonVertices];
-  const double weld_m = 0.5 * static_cast<double>(b2_linearSlop);  // b2PolygonShape::Set
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const auto& piece = pieces[k];
     const int n = static_cast<int>(piece.size());
-    double closest = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < n; ++i) {
-      for (int j = i + 1; j < n; ++j) {
-        closest = std::min(
-            closest,
-            (piece[static_cast<std::size_t>(i)] - piece[static_cast<std::size_t>(j)]).norm());
-      }
-    }
-    double twice_area = 0.0;  // m^2
-    for (int i = 0; i < n; ++i) {
-      twice_area +=
-          cross(piece[static_cast<std::size_t>(i)], piece[static_cast<std::size_t>((i + 1) % n)]);
-    }
-    if (n > b2_maxPolygonVertices || !(closest > 1.01 * weld_m) || !is_convex_ccw(piece)) {
-      throw EngineError(fmt::format(
-          "body '{}': fan piece {} has vertices {:.3g} m apart; Box2D welds vertices closer than "
-          "0.5 b2_linearSlop = {} m (b2PolygonShape::Set): use fewer outline_points",
-          body_name, k, closest, weld_m));
-    }
-    // b2PolygonShape's centroid asserts an area above b2_epsilon (float epsilon)
-    if (!(0.5 * twice_area > 10.0 * static_cast<double>(b2_epsilon))) {
-      throw EngineError(
-          fmt::format("body '{}': fan piece {} has an area of {:.3g} m^2, below what "
-                      "Box2D accepts (b2_epsilon); the body is too small for Box2D",
-                      body_name, k, 0.5 * twice_area));
+    if (const std::string why = piece_error(piece, k, body_name); !why.empty()) {
+      throw EngineError(why);
     }
     for (int i = 0; i < n; ++i) vertices[i] = to_b2(piece[static_cast<std::size_t>(i)]);
     b2PolygonShape shape;
@@ -316,6 +324,14 @@ BodyPieces body_pieces(const Body& body) {
       return out;
     }
     out.pieces = std::move(fan.pieces);
+    // a body thinner than two skins leaves degenerate pieces: refused before the run
+    for (std::size_t k = 0; k < out.pieces.size(); ++k) {
+      if (std::string why = piece_error(out.pieces[k], k, body.name); !why.empty()) {
+        out.error = std::move(why);
+        out.pieces.clear();
+        return out;
+      }
+    }
     out.how = fmt::format(
         "{} convex b2PolygonShape pieces (the centre and up to {} consecutive outline points "
         "each, at most b2_maxPolygonVertices = {}) of the {}-point outline inset by the skin "
