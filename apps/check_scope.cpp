@@ -66,6 +66,26 @@ std::vector<RunOutOfScope> runs_out_of_scope(const ResultsFile& results,
     const Case derived = beside ? *beside : parse_case(cr.case_text, cr.case_path, cr.case_name);
     std::vector<std::string> case_differences;
     if (!covered(covers, "", "outline_points")) outline_differences(as_run, derived, case_differences);
+    // the whole case (issue 31): a case key given with --set, or a case file
+    // edited since the run, makes another case than the bands were derived for
+    for (const auto& [key, value] : cr.overrides) {
+      if (!is_case_key(key) || key.find("outline_points") != std::string::npos) continue;
+      if (covered(covers, "", key)) continue;
+      case_differences.push_back(
+          fmt::format("{} = {} given with --set (derived for the case file's)", key, value));
+    }
+    if (beside && !covered(covers, "", "case_file")) {
+      const auto path = thresholds_file.parent_path() / (cr.case_name + ".toml");
+      std::ifstream in(path, std::ios::binary);
+      std::ostringstream text;
+      text << in.rdbuf();
+      if (text.str() != cr.case_text) {
+        case_differences.push_back(fmt::format(
+            "the case text it was run from differs from {} (the file was edited after the run, "
+            "or the run was made from another file of that name)",
+            path.string()));
+      }
+    }
     for (const auto& r : cr.runs) {
       // the truth is judged by no band; an unsupported run has nothing to judge
       if (r.engine_name == "analytic" || r.status == RunStatus::unsupported) continue;
@@ -81,6 +101,14 @@ std::vector<RunOutOfScope> runs_out_of_scope(const ResultsFile& results,
           s.differences.push_back(fmt::format("{}.{} = {} (derived for {})", r.engine_name, key,
                                               got->dump(), value.dump()));
         }
+      }
+      // a look-ahead before the run (SPEC §5b), whatever the mapping says
+      const auto ahead = r.extra.find("steps_before_start");
+      if (ahead != r.extra.end() && ahead->is_number() && ahead->get<double>() > 0 &&
+          !covered(covers, "", "foreknowledge")) {
+        s.differences.push_back(fmt::format(
+            "steps_before_start = {} (the library stepped before the run: a look-ahead)",
+            ahead->dump()));
       }
       const auto physics = r.mapping.find("physics");
       if (physics != r.mapping.end() && physics->is_object() &&

@@ -28,7 +28,10 @@ struct RunOutOfScope {
 // beside the thresholds file when there is one (the case the bands were
 // derived from), else the case text stored with the run. `covers` lists what
 // the file states its bands also hold for: a setting key ("dt" for every
-// engine, "mujoco.mode" for one), "foreknowledge" or "outline_points".
+// engine, "mujoco.mode" for one), a case key given with --set
+// ("contact.stiffness", "gravity"), "foreknowledge" (which also admits
+// steps_before_start > 0), "outline_points" or "case_file" (a case file that
+// differs from the case text stored with the run).
 [[nodiscard]] std::vector<RunOutOfScope> runs_out_of_scope(
     const ResultsFile& results, const std::vector<Case>& cases,
     const std::filesystem::path& thresholds_file,

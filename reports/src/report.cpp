@@ -188,11 +188,13 @@ ReportSummary write_report(const ReportOptions& options) {
     known += !o.passed && !fails_gate(o) ? 1 : 0;
   }
   if (!options.thresholds.empty()) {
+    // the gate's verdict first, as `check` exits (issue 31): a known breach
+    // is neither a pass nor a failure of the gate
     report.check_summary = fmt::format(
-        "{} of {} checks passed, {} failed{}", outcomes.size() - failed - known, outcomes.size(),
-        failed + known,
+        "gate {}: {} failed; {} of {} checks within their bands{}", failed == 0 ? "passed" : "failed",
+        failed, outcomes.size() - failed - known, outcomes.size(),
         known == 0 ? std::string()
-                   : fmt::format(" ({} of them known: an engine's own model cannot meet the band, "
+                   : fmt::format(", {} known breaches (an engine's own model cannot meet the band, "
                                  "stated before the run)",
                                  known));
   }

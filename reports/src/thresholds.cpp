@@ -242,12 +242,16 @@ bool fails_gate(const CheckOutcome& o) {
   // threshold expects: a known breach is a value outside the band, not a
   // missing run or invalid data
   if (o.value.metric.empty() || !o.invalid_data.empty()) return true;
+  // nor is a value that is not a number (a lost episode, a friction figure
+  // never reached): it fails a known breach's check too (issue 31)
+  if (!std::isfinite(o.value.actual) || !std::isfinite(o.value.desired)) return true;
   return o.threshold.known_breach.empty() ? !o.passed : o.passed;
 }
 
 const char* outcome_label(const CheckOutcome& o) {
   if (!o.invalid_data.empty()) return "invalid data";
   if (o.threshold.known_breach.empty() || o.value.metric.empty()) return o.passed ? "pass" : "fail";
+  if (!std::isfinite(o.value.actual) || !std::isfinite(o.value.desired)) return "fail";
   return o.passed ? "unexpected pass" : "known breach";
 }
 
@@ -388,13 +392,9 @@ std::string markdown_summary(const std::vector<CheckOutcome>& outcomes,
   for (const auto& f : invalid) md += fmt::format("- **invalid data**: {}\n", f.describe());
   if (failed + known == 0) return md;
   md += "| case | engine | metric | outcome | value | limit | why |\n|---|---|---|---|---|---|---|\n";
-  std::size_t shown = 0;
+  // every failure and every known breach (issue 31: a CI reader sees them all)
   for (const auto& o : outcomes) {
     if (o.passed && !fails_gate(o)) continue;
-    if (++shown > 50) {
-      md += fmt::format("\n… and {} more (see the JUnit XML).\n", failed + known - 50);
-      break;
-    }
     md += fmt::format("| {} | {} | {} | {} | {:.4g} | {:.4g} | {} |\n", o.threshold.case_name,
                       o.threshold.engine, test_name(o), outcome_label(o),
                       std::abs(o.value.actual - o.value.desired), o.limit,

@@ -44,7 +44,7 @@
     }
     if (files.childNodes.length) h.appendChild(files);
     if (data.check_summary) {
-      const failed = !/, 0 failed$/.test(data.check_summary);
+      const failed = !data.check_summary.startsWith('gate passed');
       h.appendChild(el('p', { class: failed ? 'summary-fail' : 'summary-pass' },
         'Check: ' + data.check_summary));
     }

@@ -247,6 +247,73 @@ TEST(Gate, OneEngineParameterChangeBreachesAndIsNamed) {
   EXPECT_TRUE(contains(c.output, "BREACH falling_ball.ode restitution vs truth")) << c.output;
 }
 
+// The bands hold for the case as its file states it (issue 31): a case key
+// given with --set (the law's stiffness, gravity) makes another case, which
+// check refuses (exit 2) naming the run and the key; a thresholds file that
+// states it covers the key judges it.
+TEST(Gate, CaseKeysGivenWithSetAreRefusedNamingRunAndKey) {
+  for (const std::string set : {"contact.stiffness=2e4", "gravity=[0,-9]"}) {
+    const auto out = work_dir() / "gate_case_key.h5";
+    const auto r = run("run --case falling_ball --engine analytic,mujoco --quiet --set " + set +
+                       " --out " + out.string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
+                       "/cases/thresholds.toml " + out.string());
+    EXPECT_EQ(c.exit_code, 2) << c.output;
+    const std::string key = set.substr(0, set.find('='));
+    EXPECT_TRUE(contains(c.output, "falling_ball.mujoco (" + key + " = ")) << c.output;
+    EXPECT_TRUE(contains(c.output, "given with --set")) << c.output;
+  }
+}
+
+// A case file edited after its run: the stored case text and the file beside
+// the thresholds differ, and check refuses the run (exit 2) naming the file.
+TEST(Gate, ACaseFileEditedAfterTheRunIsRefused) {
+  const auto dir = work_dir() / "edited_case";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy_file(fs::path(PB_SOURCE_DIR) / "cases" / "thresholds.toml", dir / "thresholds.toml");
+  fs::copy_file(fs::path(PB_SOURCE_DIR) / "cases" / "falling_ball.toml", dir / "falling_ball.toml");
+  const auto out = dir / "results.h5";
+  ASSERT_EQ(run("run --case " + (dir / "falling_ball.toml").string() +
+                " --engine analytic,mujoco --quiet --out " + out.string())
+                .exit_code,
+            0);
+  // as run: judged, not refused (exit 1: the other cases' thresholds find
+  // no runs in this file)
+  const auto judged =
+      run("check --thresholds " + (dir / "thresholds.toml").string() + " " + out.string());
+  EXPECT_EQ(judged.exit_code, 1) << judged.output;
+  EXPECT_FALSE(contains(judged.output, "the case text it was run from")) << judged.output;
+  std::ofstream(dir / "falling_ball.toml", std::ios::app) << "# edited after the run\n";
+  const auto c = run("check --thresholds " + (dir / "thresholds.toml").string() + " " + out.string());
+  EXPECT_EQ(c.exit_code, 2) << c.output;
+  EXPECT_TRUE(contains(c.output, "falling_ball.mujoco (the case text it was run from differs from"))
+      << c.output;
+}
+
+// A run whose library stepped before it (steps_before_start > 0, SPEC §5b: a
+// look-ahead) is refused, whatever its mapping says; here a results file's
+// record of it is changed with h5py to 3 steps.
+TEST(Gate, ALookAheadIsRefused) {
+  const auto out = work_dir() / "gate_look_ahead.h5";
+  ASSERT_EQ(run("run --case falling_ball --engine analytic,mujoco --quiet --out " + out.string())
+                .exit_code,
+            0);
+  const std::string py = std::string(PB_PYTHON) + " -c '" +
+                         "import h5py, json, sys\n"
+                         "with h5py.File(sys.argv[1], \"r+\") as f:\n"
+                         "    a = f[\"runs/falling_ball/mujoco\"].attrs\n"
+                         "    x = json.loads(a[\"extra\"]); x[\"steps_before_start\"] = 3\n"
+                         "    a[\"extra\"] = json.dumps(x)\n' " +
+                         out.string();
+  ASSERT_EQ(std::system(py.c_str()), 0);
+  const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
+                     "/cases/thresholds.toml " + out.string());
+  EXPECT_EQ(c.exit_code, 2) << c.output;
+  EXPECT_TRUE(contains(c.output, "falling_ball.mujoco (steps_before_start = 3")) << c.output;
+}
+
 // Results made with foreknowledge (MuJoCo's and ODE's `oracle` modes: a probe
 // run of the case calibrates the mapping) are refused, naming every such run,
 // the mode and the foreknowledge; nothing is written.
@@ -261,8 +328,9 @@ TEST(Gate, OracleResultsAreRefusedNamingTheRuns) {
   EXPECT_TRUE(contains(c.output, "2 run(s) made outside what the thresholds were derived for"))
       << c.output;
   EXPECT_TRUE(contains(c.output, "falling_ball.mujoco (mujoco.mode = \"oracle\" (derived for "
-                                 "\"native\"), foreknowledge"))
+                                 "\"native\"), steps_before_start = "))
       << c.output;
+  EXPECT_TRUE(contains(c.output, "foreknowledge (a probe run")) << c.output;
   EXPECT_TRUE(contains(c.output, "falling_ball.ode (ode.mode = \"oracle\"")) << c.output;
   EXPECT_FALSE(contains(c.output, "falling_ball.box2d (")) << c.output;
   EXPECT_FALSE(fs::exists(work_dir() / "gate_oracle.junit.xml"));

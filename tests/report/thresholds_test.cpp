@@ -88,6 +88,40 @@ TEST(Thresholds, NanIsABreachNotAKnownOne) {
   EXPECT_TRUE(fails_gate(out[0]));
 }
 
+// issue 31: a known breach is a value outside the band, not a value that is
+// not a number (a lost episode, a friction figure never reached, NaN from
+// either side): that fails the gate like any other check, labelled "fail"
+TEST(Thresholds, NanFailsAKnownBreachToo) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const auto& [actual, desired] : {std::pair{nan, 0.8}, std::pair{0.5, nan}, std::pair{inf, 0.8}}) {
+    const auto out = check_thresholds({band("mujoco", 0.01, "soft contact flicker")},
+                                      {value("mujoco", actual, desired)}, {});
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_TRUE(fails_gate(out[0])) << actual << " " << desired;
+    EXPECT_STREQ(outcome_label(out[0]), "fail");
+  }
+  // a finite value outside the band stays the known breach it is
+  const auto finite = check_thresholds({band("mujoco", 0.01, "soft contact flicker")},
+                                       {value("mujoco", 0.5, 0.8)}, {});
+  EXPECT_FALSE(fails_gate(finite[0]));
+  EXPECT_STREQ(outcome_label(finite[0]), "known breach");
+}
+
+// issue 31: summary.md lists every known breach, not the first 50
+TEST(Thresholds, TheSummaryListsEveryKnownBreach) {
+  std::vector<Threshold> bands;
+  std::vector<MetricValue> values;
+  for (int k = 0; k < 70; ++k) {
+    bands.push_back(band("engine" + std::to_string(k), 0.01, "breach " + std::to_string(k)));
+    values.push_back(value("engine" + std::to_string(k), 0.5, 0.8));
+  }
+  const std::string md = markdown_summary(check_thresholds(bands, values, {}), {}, {});
+  for (int k = 0; k < 70; ++k) {
+    EXPECT_NE(md.find("| breach " + std::to_string(k) + " |"), std::string::npos) << k;
+  }
+}
+
 TEST(Thresholds, JunitSkipsKnownBreachesAndFailsTheRest) {
   const auto out = check_thresholds(
       {band("ode", 0.01), band("box2d", 0.01, "impulsive restitution")},
