@@ -42,6 +42,15 @@ struct ImpactsOptions {
 };
 
 // the data, checked: read, its convention measured and printed
+// how many parameters the model named `name` fits (0 when none is named so)
+std::size_t parameter_count(const std::vector<std::unique_ptr<ImpactModel>>& models,
+                            const std::string& name) {
+  for (const auto& m : models) {
+    if (m->name() == name) return m->parameters().size();
+  }
+  return 0;
+}
+
 struct LoadedData {
   ImpactSet set;
   ConventionCheck convention;
@@ -269,7 +278,9 @@ int run_fit(const ImpactsOptions& opt) {
   std::vector<FoldFit> fits = run_tasks(opt, d, models, tasks, work);
   if (!work.empty()) {  // some tasks came from the folder
     fits.clear();
-    for (const ImpactTask& t : tasks) fits.push_back(read_task(work, t));
+    for (const ImpactTask& t : tasks) {
+      fits.push_back(read_task(work, t, d.table.size(), parameter_count(models, t.model)));
+    }
   }
   return write_study(opt, assemble_fit(opt, d, models, fits), "cross_validated");
 }
@@ -296,7 +307,7 @@ int run_merge(const ImpactsOptions& opt) {
       missing.push_back(t.label());
       continue;
     }
-    fits.push_back(read_task(opt.work, t));
+    fits.push_back(read_task(opt.work, t, d.table.size(), parameter_count(models, t.model)));
   }
   if (!missing.empty()) {
     throw InputError(opt.work, 0, "tasks",

@@ -4,6 +4,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "planarbench/errors.hpp"
 
@@ -90,10 +91,34 @@ void write_task(const fs::path& work, const ImpactTask& t, const FoldFit& f) {
   write_atomically(work / "tasks" / t.file_name(), fold_fit_json(f).dump() + "\n");
 }
 
-FoldFit read_task(const fs::path& work, const ImpactTask& t) {
+FoldFit read_task(const fs::path& work, const ImpactTask& t, std::size_t impacts,
+                  std::size_t parameters) {
   const fs::path path = work / "tasks" / t.file_name();
   try {
-    return fold_fit_from_json(read_json(path));
+    FoldFit f = fold_fit_from_json(read_json(path));
+    if (f.model != t.model || f.fold != t.fold) {
+      throw InputError(path.string(), 0, "model, fold",
+                       fmt::format("are {} and {}; the file is named for {} (a task file moved or "
+                                   "edited: run its shard again)",
+                                   f.model, f.fold, t.label()));
+    }
+    std::vector<bool> seen(impacts, false);
+    for (std::size_t k = 0; k < f.predicted.size(); ++k) {
+      const std::size_t i = f.predicted[k];
+      if (i >= impacts || seen[i]) {
+        throw InputError(path.string(), 0, fmt::format("predicted[{}]", k),
+                         fmt::format("is {}: each must be a row of the study's table, [0, {}), "
+                                     "once",
+                                     i, impacts));
+      }
+      seen[i] = true;
+    }
+    if (f.fit.parameters.size() != parameters) {
+      throw InputError(path.string(), 0, "parameters",
+                       fmt::format("has {} values; model {} has {}", f.fit.parameters.size(),
+                                   f.model, parameters));
+    }
+    return f;
   } catch (const nlohmann::json::exception& e) {
     throw InputError(path.string(), 0, "", fmt::format("is not a task of `impacts fit` ({})", e.what()));
   } catch (const std::runtime_error& e) {

@@ -39,6 +39,11 @@ void prepare_work_folder(const std::filesystem::path& work, const nlohmann::orde
 
 [[nodiscard]] bool task_done(const std::filesystem::path& work, const ImpactTask& t);
 void write_task(const std::filesystem::path& work, const ImpactTask& t, const FoldFit& f);
-[[nodiscard]] FoldFit read_task(const std::filesystem::path& work, const ImpactTask& t);
+// A task file is input (issue 35): it must be the task it is named for (its
+// model and fold), predict only rows of the study's table (< impacts), each
+// once, and carry as many parameters as the model has; else an InputError
+// naming the file and the field, before anything is indexed.
+[[nodiscard]] FoldFit read_task(const std::filesystem::path& work, const ImpactTask& t,
+                                std::size_t impacts, std::size_t parameters);
 
 }  // namespace pb::cli

@@ -6,6 +6,12 @@
 // with h5py alone (tests/impacts/read_study.py).
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
+#include <sstream>
+
+#include <fstream>
+
 #include <nlohmann/json.hpp>
 
 #include "child_process.hpp"
@@ -123,6 +129,54 @@ TEST(CmdImpacts, ShardsMergeToTheBitsOfOneProcessAndRepeatsAreTheSame) {
                                  " --engine box2d --folds 3 --max-evaluations 4 -q");
   EXPECT_EQ(other.exit.code, 2);
   EXPECT_NE(other.err.find("another study"), std::string::npos) << other.err;
+}
+
+// A task file is input (issue 35): a prediction index past the table (it
+// crashed merge), -1 (it read a row from outside the table), a duplicate, a
+// task file of another model and one without parameters are each refused by
+// merge with exit 2 naming the file and the field, and no file is written.
+TEST(CmdImpacts, TamperedTaskFilesAreRefusedNamingFileAndField) {
+  const fs::path dir = fresh_dir("tampered");
+  const fs::path train = impacts_file(dir, "train.mat", 3);
+  const std::string work = (dir / "work").string();
+  ASSERT_EQ(impacts("fit --data " + train.string() + " --shard 0/1 --work " + work + " " + kQuick)
+                .exit.code,
+            0);
+  // the first task file of the folder, rewritten by `edit` (Python on its JSON `t`)
+  fs::path task;
+  for (const auto& e : fs::directory_iterator(dir / "work" / "tasks")) {
+    if (e.path().filename().string().ends_with(".0.json")) task = e.path();
+  }
+  ASSERT_FALSE(task.empty());
+  const std::string original = [&] {
+    std::ifstream in(task);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }();
+  struct Tamper {
+    const char* edit;
+    const char* field;
+  };
+  for (const Tamper& x : {Tamper{"t[\"predicted\"][0] = 999999", "predicted[0]"},
+                          Tamper{"t[\"predicted\"][0] = -1", "predicted[0]"},
+                          Tamper{"t[\"predicted\"][1] = t[\"predicted\"][0]", "predicted[1]"},
+                          Tamper{"t[\"model\"] = \"mujoco\"", "model, fold"},
+                          Tamper{"t[\"parameters\"] = []", "parameters"}}) {
+    std::ofstream(task) << original;
+    const std::string py = fmt::format(
+        "/usr/bin/python3 -c 'import json, sys; p = sys.argv[1]; t = json.load(open(p)); {}; "
+        "json.dump(t, open(p, \"w\"))' {}",
+        x.edit, task.string());
+    ASSERT_EQ(std::system(py.c_str()), 0) << x.edit;
+    const fs::path out = dir / "m.h5";
+    const Finished m = impacts("merge " + work + " --data " + train.string() + " --out " +
+                               out.string());
+    EXPECT_EQ(m.exit.code, 2) << x.edit << ": " << m.err;
+    EXPECT_NE(m.err.find(task.filename().string()), std::string::npos) << x.edit << ": " << m.err;
+    EXPECT_NE(m.err.find(x.field), std::string::npos) << x.edit << ": " << m.err;
+    EXPECT_FALSE(fs::exists(out)) << x.edit;
+  }
 }
 
 TEST(CmdImpacts, AMergeOfUnfinishedShardsNamesWhatIsMissing) {
