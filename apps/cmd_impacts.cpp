@@ -3,6 +3,8 @@
 // then on the whole file), `score` judges frozen parameters on another file,
 // `merge` assembles a fit run as shards (scripts/slurm/submit_impacts.sh).
 #include <fmt/format.h>
+
+#include <cmath>
 #include <unistd.h>
 
 #include <chrono>
@@ -350,6 +352,22 @@ int run_score(const ImpactsOptions& opt) {
       throw InputError(opt.params, 0, m->name(),
                        fmt::format("has {} parameters, the model takes {}", values->size(),
                                    m->parameters().size()));
+    }
+    // frozen parameters are input (issue 35): each within the bounds the fit
+    // searches, before an engine is built with them (an ODE stiffness of
+    // 5e-324 aborted inside the library)
+    if (values != nullptr) {
+      const auto params = m->parameters();
+      for (std::size_t k = 0; k < params.size(); ++k) {
+        const double v = (*values)[k];
+        if (!(std::isfinite(v) && v >= params[k].lower && v <= params[k].upper)) {
+          throw InputError(opt.params, 0, fmt::format("{} {}", m->name(), params[k].name),
+                           fmt::format("is {}: the model's {} lies in [{}, {}] {} (the bounds "
+                                       "its fit searches)",
+                                       v, params[k].name, params[k].lower, params[k].upper,
+                                       params[k].unit));
+        }
+      }
     }
     FoldFit f = score_model(*m, d.table, values ? *values : none, opt.jobs);
     if (!opt.quiet) std::fprintf(stderr, "%s: scored %zu impacts (%.1f s)\n", m->name().c_str(), f.outcomes.size(), f.wall_time_s);

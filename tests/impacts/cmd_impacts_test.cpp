@@ -106,6 +106,45 @@ TEST(CmdImpacts, ScoringTheFileFittedToIsLabelledInSample) {
   EXPECT_TRUE(s.at("description").at("in_sample").get<bool>());
 }
 
+// Frozen parameters are input (issue 35 item 2): a fit file whose whole-file
+// parameters leave the bounds the fit searches (a stiffness of 5e-324 aborted
+// ODE inside dWorldStep; a restitution of -5 ran "ok"), or are not numbers,
+// is refused by score with exit 2 naming the model and the parameter, before
+// any engine is built; a description that is not a fit's, naming its field.
+TEST(CmdImpacts, ScoreRefusesFrozenParametersOutsideTheFitsBounds) {
+  const fs::path dir = fresh_dir("score_bounds");
+  const fs::path train = impacts_file(dir, "train.mat", 1);
+  const fs::path fit = dir / "fit.h5";
+  ASSERT_EQ(impacts(fmt::format("fit --data {} --out {} {}", train.string(), fit.string(), kQuick))
+                .exit.code,
+            0);
+  for (const char* value : {"5e-324", "-5.0", "1e300", "float(\"nan\")"}) {
+    const fs::path bad = dir / "bad.h5";
+    fs::copy_file(fit, bad, fs::copy_options::overwrite_existing);
+    // every whole-file fit's first parameter set to `value`
+    const std::string py = fmt::format(
+        "/usr/bin/python3 -c 'import h5py, json, sys\n"
+        "with h5py.File(sys.argv[1], \"r+\") as f:\n"
+        "    c = f[\"campaign\"]; d = json.loads(c.attrs[\"description\"])\n"
+        "    for m in d[\"models\"]:\n"
+        "        for x in m[\"fits\"]:\n"
+        "            if x[\"parameters\"]: x[\"parameters\"][0] = {}\n"
+        "    c.attrs[\"description\"] = json.dumps(d)\n' {}",
+        value, bad.string());
+    ASSERT_EQ(std::system(py.c_str()), 0) << value;
+    const fs::path out = dir / "score.h5";
+    const Finished s = impacts(fmt::format("score --data {} --params {} --out {} -q",
+                                           train.string(), bad.string(), out.string()));
+    EXPECT_EQ(s.exit.code, 2) << value << ": " << s.err;
+    // NaN is not JSON: the description itself is refused, naming it
+    const bool nan = std::string(value).find("nan") != std::string::npos;
+    EXPECT_NE(s.err.find(nan ? "'description' is not JSON" : "the bounds its fit searches"),
+              std::string::npos)
+        << value << ": " << s.err;
+    EXPECT_FALSE(fs::exists(out)) << value;
+  }
+}
+
 TEST(CmdImpacts, ShardsMergeToTheBitsOfOneProcessAndRepeatsAreTheSame) {
   const fs::path dir = fresh_dir("shards");
   const fs::path train = impacts_file(dir, "train.mat", 3);

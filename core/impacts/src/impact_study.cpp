@@ -285,14 +285,22 @@ FrozenParameters frozen_parameters(const CampaignTable& fit, const std::string& 
   }
   FrozenParameters out;
   const auto& d = fit.description;
-  out.data_sha256 = d.at("data").at("sha256").get<std::string>();
-  out.data_path = d.at("data").at("path").get<std::string>();
-  for (const auto& m : d.at("models")) {
-    for (const auto& f : m.at("fits")) {
-      if (f.at("fold").get<int>() != kWholeFile) continue;
-      out.models.emplace_back(m.at("name").get<std::string>(),
-                              f.at("parameters").get<std::vector<double>>());
+  try {
+    out.data_sha256 = d.at("data").at("sha256").get<std::string>();
+    out.data_path = d.at("data").at("path").get<std::string>();
+    for (const auto& m : d.at("models")) {
+      for (const auto& f : m.at("fits")) {
+        if (f.at("fold").get<int>() != kWholeFile) continue;
+        out.models.emplace_back(m.at("name").get<std::string>(),
+                                f.at("parameters").get<std::vector<double>>());
+      }
     }
+  } catch (const nlohmann::json::exception& e) {
+    // a description that is not a fit's (issue 35: raw library text before)
+    throw InputError(path, 0, "/campaign description",
+                     fmt::format("is not the description of a fit of `planarbench impacts fit` "
+                                 "({})",
+                                 e.what()));
   }
   if (out.models.empty()) {
     throw InputError(path, 0, "/campaign description models",
