@@ -292,15 +292,28 @@ int run_merge(const ImpactsOptions& opt) {
   check_work_spares_inputs(opt);
   const nlohmann::json study = read_study(opt.work);
   const LoadedData d = load_data(opt);
-  if (study.at("data_sha256").get<std::string>() != d.set.sha256) {
+  ImpactsOptions o = opt;
+  std::vector<std::string> names;
+  std::string fitted_sha256;
+  // study.json is input (issue 35): its fields checked as the command line's
+  const std::string study_file = (fs::path(opt.work) / "study.json").string();
+  try {
+    fitted_sha256 = study.at("data_sha256").get<std::string>();
+    o.folds = study.at("folds").get<int>();
+    o.seed = study.at("seed").get<std::uint64_t>();
+    names = study.at("models").get<std::vector<std::string>>();
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(study_file, 0, "data_sha256, folds, seed, models",
+                     fmt::format("are not what `impacts fit --work` writes ({})", e.what()));
+  }
+  if (o.folds < 2 || o.folds > 20) {
+    throw InputError(study_file, 0, "folds", fmt::format("is {}: must be in [2, 20]", o.folds));
+  }
+  if (fitted_sha256 != d.set.sha256) {
     throw InputError(opt.data, 0, "--data",
                      fmt::format("has sha256 {}, but the shards in {} fitted a file of sha256 {}",
-                                 d.set.sha256, opt.work, study.at("data_sha256").get<std::string>()));
+                                 d.set.sha256, opt.work, fitted_sha256));
   }
-  ImpactsOptions o = opt;
-  o.folds = study.at("folds").get<int>();
-  o.seed = study.at("seed").get<std::uint64_t>();
-  const std::vector<std::string> names = study.at("models").get<std::vector<std::string>>();
   const auto models = impact_models(engine_list(engines_among(names)), !d.set.models.empty());
   std::vector<FoldFit> fits;
   std::vector<std::string> missing;

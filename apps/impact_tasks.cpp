@@ -40,6 +40,11 @@ std::vector<ImpactTask> shard_tasks(const std::vector<ImpactTask>& all, int k, i
 namespace {
 
 nlohmann::json read_json(const fs::path& path) {
+  // a FIFO or a device would block the read forever (issue 35): regular files only
+  std::error_code ec;
+  if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) {
+    throw InputError(path.string(), 0, "", "is not a regular file (a FIFO, a device or a folder)");
+  }
   std::ifstream in(path);
   if (!in) throw InputError(path.string(), 0, "", "cannot be read");
   try {

@@ -5,6 +5,7 @@
 // exit 2 naming the variable and leaving no file behind. Files are read back
 // with h5py alone (tests/impacts/read_study.py).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <fmt/format.h>
 
@@ -216,6 +217,49 @@ TEST(CmdImpacts, TamperedTaskFilesAreRefusedNamingFileAndField) {
     EXPECT_NE(m.err.find(x.field), std::string::npos) << x.edit << ": " << m.err;
     EXPECT_FALSE(fs::exists(out)) << x.edit;
   }
+}
+
+// study.json is input too (issue 35 items 4, 5, 13): folds outside [2, 20]
+// (1e6 hung, 2e9 ran out of memory, -5 was accepted), a field of the wrong
+// type (raw JSON text), and a FIFO in its place (merge blocked forever) are
+// refused with exit 2 naming the file and the field.
+TEST(CmdImpacts, AStudyFileOutsideWhatFitWritesIsRefused) {
+  const fs::path dir = fresh_dir("study_file");
+  const fs::path train = impacts_file(dir, "train.mat", 3);
+  const fs::path work = dir / "work";
+  ASSERT_EQ(impacts(fmt::format("fit --data {} --shard 0/1 --work {} {}", train.string(),
+                                work.string(), kQuick))
+                .exit.code,
+            0);
+  const fs::path study = work / "study.json";
+  const std::string original = file_bytes(study);
+  struct Bad {
+    const char* edit;
+    const char* says;
+  };
+  for (const Bad& x : {Bad{"t[\"folds\"] = 1000000", "folds"}, Bad{"t[\"folds\"] = -5", "folds"},
+                       Bad{"t[\"folds\"] = \"two\"", "are not what `impacts fit --work` writes"}}) {
+    std::ofstream(study) << original;
+    const std::string py = fmt::format(
+        "/usr/bin/python3 -c 'import json, sys; p = sys.argv[1]; t = json.load(open(p)); {}; "
+        "json.dump(t, open(p, \"w\"))' {}",
+        x.edit, study.string());
+    ASSERT_EQ(std::system(py.c_str()), 0) << x.edit;
+    const fs::path out = dir / "m.h5";
+    const Finished m = impacts(fmt::format("merge {} --data {} --out {} -q", work.string(),
+                                           train.string(), out.string()));
+    EXPECT_EQ(m.exit.code, 2) << x.edit << ": " << m.err;
+    EXPECT_NE(m.err.find("study.json"), std::string::npos) << x.edit << ": " << m.err;
+    EXPECT_NE(m.err.find(x.says), std::string::npos) << x.edit << ": " << m.err;
+    EXPECT_FALSE(fs::exists(out)) << x.edit;
+  }
+  // a FIFO where the study file was: refused at once, not read
+  fs::remove(study);
+  ASSERT_EQ(::mkfifo(study.c_str(), 0600), 0);
+  const Finished fifo = impacts(fmt::format("merge {} --data {} --out {} -q", work.string(),
+                                            train.string(), (dir / "m.h5").string()));
+  EXPECT_EQ(fifo.exit.code, 2) << fifo.err;
+  EXPECT_NE(fifo.err.find("is not a regular file"), std::string::npos) << fifo.err;
 }
 
 TEST(CmdImpacts, AMergeOfUnfinishedShardsNamesWhatIsMissing) {
