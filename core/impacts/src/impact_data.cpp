@@ -75,6 +75,51 @@ std::string file_sha256(const std::filesystem::path& path) {
   return internal::sha256_hex(bytes.str());
 }
 
+// the most impacts a file may hold: 1e5 (MCube's training split has 1146),
+// 1e5 x 36 doubles = 29 MB of data and v_models; a header claiming more is
+// refused before anything is allocated (issue 35: 5e7 x 6 ended in bad_alloc)
+constexpr std::size_t kMaxImpacts = 100000;
+
+// what a variable's header claims, checked before its data is read: at most
+// kMaxImpacts rows of at most 18 columns, and, stored uncompressed, no more
+// bytes than the file has (a 416-byte file claimed 2.4 GB)
+void check_claim(const std::string& path, const std::string& name, const matvar_t* v,
+                 std::uintmax_t file_bytes) {
+  if (v == nullptr || v->rank < 1 || v->dims == nullptr) return;
+  std::size_t elements = 1;
+  for (int k = 0; k < v->rank; ++k) {
+    const std::size_t d = v->dims[k];
+    if (d > kMaxImpacts * 18 || (d != 0 && elements > kMaxImpacts * 18 / d)) {
+      refuse(path, name,
+             fmt::format("claims {} values: a file holds at most {} impacts (18 values each at "
+                         "most); refused before reading",
+                         shape_of(v), kMaxImpacts));
+    }
+    elements *= d;
+  }
+  if (v->compression == MAT_COMPRESSION_NONE && elements * 8 > file_bytes) {
+    refuse(path, name,
+           fmt::format("claims {} doubles ({} bytes) in a {}-byte file: truncated or damaged",
+                       shape_of(v), elements * 8, file_bytes));
+  }
+}
+
+// every field of a struct variable's header (check_claim)
+void check_struct_claims(const std::string& path, const std::string& name, matvar_t* v,
+                         std::uintmax_t file_bytes) {
+  if (v == nullptr) return;
+  if (v->class_type != MAT_C_STRUCT) {
+    check_claim(path, name, v, file_bytes);
+    return;
+  }
+  const unsigned fields = Mat_VarGetNumberOfFields(v);
+  char* const* names = Mat_VarGetStructFieldnames(v);
+  for (unsigned f = 0; f < fields; ++f) {
+    check_claim(path, name + "." + (names != nullptr && names[f] != nullptr ? names[f] : "?"),
+                Mat_VarGetStructFieldByIndex(v, f, 0), file_bytes);
+  }
+}
+
 }  // namespace
 
 ImpactSet read_impacts(const std::filesystem::path& path) {
@@ -83,6 +128,11 @@ ImpactSet read_impacts(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path, ec)) refuse(p, "--data", "is not a readable file");
   MatFile mat(Mat_Open(p.c_str(), MAT_ACC_RDONLY));
   if (!mat) refuse(p, "--data", "is not a MAT file libmatio can read (MAT v5 or v7.3 expected)");
+  const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+  for (const char* name : {"data", "v_models"}) {
+    MatVar info(Mat_VarReadInfo(mat.get(), name));
+    check_struct_claims(p, name, info.get(), bytes);
+  }
   MatVar data(Mat_VarRead(mat.get(), "data"));
   if (!data || data->class_type != MAT_C_STRUCT) {
     refuse(p, "data", "missing or not a struct: data (states_i, states_f, n, d, drop) expected");
