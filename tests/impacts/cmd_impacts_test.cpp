@@ -298,6 +298,18 @@ TEST(CmdImpacts, AHeaderClaimingMoreThanTheFileHoldsIsRefused) {
     EXPECT_NE(f.err.find(x.says), std::string::npos) << f.err;
     EXPECT_FALSE(fs::exists(out));
   }
+  // issue 35 item 7: a compressed file cut short (its last 50 bytes gone)
+  // was read with zeros where its data ended; libmatio logs it, and the
+  // reader refuses the file with its words
+  const fs::path whole = impacts_file(dir, "whole.mat", 4);
+  const std::string bytes = file_bytes(whole);
+  const fs::path cut = dir / "cut.mat";
+  std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() - 50);
+  const Finished f = impacts(fmt::format("fit --data {} --engine none --out {} -q", cut.string(),
+                                         (dir / "cut.h5").string()));
+  EXPECT_EQ(f.exit.code, 2) << f.err;
+  EXPECT_NE(f.err.find("truncated or damaged (libmatio: "), std::string::npos) << f.err;
+  EXPECT_FALSE(fs::exists(dir / "cut.h5"));
 }
 
 TEST(CmdImpacts, BadInputIsRefusedNamingTheVariableAndLeavesNoFile) {

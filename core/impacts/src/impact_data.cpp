@@ -75,6 +75,25 @@ std::string file_sha256(const std::filesystem::path& path) {
   return internal::sha256_hex(bytes.str());
 }
 
+// what libmatio logs while a file is read (its errors and warnings: a
+// compressed variable cut short is read as zeros and only logged, issue 35),
+// gathered for the thread reading; Mat_LogInitFunc is process-wide
+thread_local std::string* matio_said = nullptr;
+void gather_matio_log(int /*level*/, char* message) {
+  if (matio_said == nullptr || message == nullptr) return;
+  if (!matio_said->empty()) *matio_said += "; ";
+  *matio_said += message;
+}
+struct MatioLogScope {
+  explicit MatioLogScope(std::string& said) {
+    Mat_LogInitFunc("planarbench", gather_matio_log);
+    matio_said = &said;
+  }
+  ~MatioLogScope() { matio_said = nullptr; }
+  MatioLogScope(const MatioLogScope&) = delete;
+  MatioLogScope& operator=(const MatioLogScope&) = delete;
+};
+
 // the most impacts a file may hold: 1e5 (MCube's training split has 1146),
 // 1e5 x 36 doubles = 29 MB of data and v_models; a header claiming more is
 // refused before anything is allocated (issue 35: 5e7 x 6 ended in bad_alloc)
@@ -126,6 +145,8 @@ ImpactSet read_impacts(const std::filesystem::path& path) {
   const std::string p = path.string();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) refuse(p, "--data", "is not a readable file");
+  std::string matio_log;
+  const MatioLogScope log_scope(matio_log);
   MatFile mat(Mat_Open(p.c_str(), MAT_ACC_RDONLY));
   if (!mat) refuse(p, "--data", "is not a MAT file libmatio can read (MAT v5 or v7.3 expected)");
   const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
@@ -154,6 +175,9 @@ ImpactSet read_impacts(const std::filesystem::path& path) {
   // v_models is optional (a file of impacts without the dataset's predictions)
   if (MatVar models(Mat_VarRead(mat.get(), "v_models")); models) {
     set.models = rows_of<18>(matrix(p, "v_models", models.get(), n, 18), n);
+  }
+  if (!matio_log.empty()) {
+    refuse(p, "--data", "is truncated or damaged (libmatio: " + matio_log + ")");
   }
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < 6; ++j) {
