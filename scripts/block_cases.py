@@ -171,28 +171,20 @@ def family_cases():
     masses = (0.5, 2.0, 5.0)
     stiffnesses = (5e4, 2e5, 5e5)
     i = 0
-    for aspect in (0.1, 0.3, 1.0):
-        for slope in (10.0, 25.0, 40.0):
-            for ratio in (0.5, 0.98):
-                m, k = masses[i % 3], stiffnesses[(i // 3) % 3]
-                i += 1
-                mu = math.tan(math.radians(slope)) / ratio
-                name = f"hold_a{aspect:g}_s{slope:g}_r{ratio:g}"
-                yield name, block_case(
-                    name, f"family: hold, aspect {aspect:g}, {slope:g} deg, "
-                    f"tan/mu {ratio:g}", w, w * aspect, m, k, 0.9, slope, mu, 0.0, 1.0,
-                    ["Block family (issue 30, campaigns/block_family.toml): hold."])
-    for aspect in (0.1, 1.0):
-        for slope in (10.0, 25.0, 40.0):
-            for ratio in (1.02, 2.0):
-                m, k = masses[i % 3], stiffnesses[(i // 3) % 3]
-                i += 1
-                mu = math.tan(math.radians(slope)) / ratio
-                name = f"slide_a{aspect:g}_s{slope:g}_r{ratio:g}"
-                yield name, block_case(
-                    name, f"family: slide, aspect {aspect:g}, {slope:g} deg, "
-                    f"tan/mu {ratio:g}", w, w * aspect, m, k, 0.9, slope, mu, 0.0, 1.0,
-                    ["Block family (issue 30, campaigns/block_family.toml): slide."])
+    # on an incline: held (tan / mu < 1) and sliding (> 1)
+    for kind, aspects, ratios in (("hold", (0.1, 0.3, 1.0), (0.5, 0.98)),
+                                  ("slide", (0.1, 1.0), (1.02, 2.0))):
+        for aspect in aspects:
+            for slope in (10.0, 25.0, 40.0):
+                for ratio in ratios:
+                    m, k = masses[i % 3], stiffnesses[(i // 3) % 3]
+                    i += 1
+                    mu = math.tan(math.radians(slope)) / ratio
+                    name = f"{kind}_a{aspect:g}_s{slope:g}_r{ratio:g}"
+                    yield name, block_case(
+                        name, f"family: {kind}, aspect {aspect:g}, {slope:g} deg, "
+                        f"tan/mu {ratio:g}", w, w * aspect, m, k, 0.9, slope, mu, 0.0, 1.0,
+                        [f"Block family (issue 30, campaigns/block_family.toml): {kind}."])
     for aspect in (0.1, 1.0):
         for v0 in (0.5, 5.0):
             for mu in (0.3, 0.6):

@@ -10,15 +10,6 @@ namespace pb::internal::mujoco {
 
 namespace {
 
-nlohmann::json response_json(const CollisionResponse& r) {
-  return {{"restitution", r.restitution},
-          {"force_duration_s", r.force_duration_s},
-          {"duration_s", r.duration_s},
-          {"peak_force_n", r.peak_force_n},
-          {"max_penetration_m", r.max_penetration_m},
-          {"impulse_ns", r.impulse_ns}};
-}
-
 nlohmann::json law_parameters(const ContactLaw& law) {
   if (const auto* kv = std::get_if<KelvinVoigt>(&law)) {
     return {{"stiffness_n_per_m", kv->stiffness_n_per_m},
@@ -79,9 +70,9 @@ LawMapping map_contact_law(const ContactLaw& law, const Calibration& cal) {
         "linear spring-damper with the law's force duration and effective restitution at "
         "(m_eff, approach speed), as MuJoCo's direct solref (-k/m_eff, -c/m_eff)";
     j["approach_speed_mps"] = v;
-    j["law_response"] = response_json(target);
+    j["law_response"] = to_json(target);
     j["linear_response"] =
-        response_json(kelvin_voigt_response(eq.stiffness_n_per_m, eq.damping_ns_per_m, m, v));
+        to_json(kelvin_voigt_response(eq.stiffness_n_per_m, eq.damping_ns_per_m, m, v));
     if (kv) {
       lost.push_back(
           "the cubic damping ramp over damping_depth (MuJoCo's damping is linear in the "

@@ -19,15 +19,6 @@ nlohmann::json vec_json(const Vec2& v) {
   return nlohmann::json::array({v.x(), v.y()});
 }
 
-nlohmann::json response_json(const CollisionResponse& r) {
-  return {{"restitution", r.restitution},
-          {"force_duration_s", r.force_duration_s},
-          {"duration_s", r.duration_s},
-          {"peak_force_n", r.peak_force_n},
-          {"max_penetration_m", r.max_penetration_m},
-          {"impulse_ns", r.impulse_ns}};
-}
-
 nlohmann::json law_json(const ContactLaw& law) {
   nlohmann::json j = {{"law", contact_law_name(law)}};
   if (const auto* kv = std::get_if<KelvinVoigt>(&law)) {
@@ -162,8 +153,8 @@ void OdeEngine::map_contacts_oracle(const std::vector<FirstTouch>& touches) {
                           {"how", lin.how},
                           {"mass_kg", lin.mass_kg},
                           {"approach_speed_mps", lin.approach_speed_mps},
-                          {"law_response", response_json(lin.law_response)},
-                          {"linear_response", response_json(lin.linear_response)}};
+                          {"law_response", to_json(lin.law_response)},
+                          {"linear_response", to_json(lin.linear_response)}};
       jp["soft_contact"] = {{"damping_mapping", settings_.damping_mapping},
                             {"step_s", step_s_},
                             {"erp", soft_[p].erp},

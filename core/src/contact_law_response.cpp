@@ -11,6 +11,15 @@
 
 namespace pb {
 
+nlohmann::json to_json(const CollisionResponse& r) {
+  return {{"restitution", r.restitution},
+          {"force_duration_s", r.force_duration_s},
+          {"duration_s", r.duration_s},
+          {"peak_force_n", r.peak_force_n},
+          {"max_penetration_m", r.max_penetration_m},
+          {"impulse_ns", r.impulse_ns}};
+}
+
 namespace {
 
 constexpr double kPi = std::numbers::pi;

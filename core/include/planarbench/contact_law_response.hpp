@@ -4,6 +4,8 @@
 // restitution, a linear spring-damper equivalent of Lankarani-Nikravesh).
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include "planarbench/case.hpp"
 
 namespace pb {
@@ -16,6 +18,10 @@ struct CollisionResponse {
   double max_penetration_m = 0.0;  // m
   double impulse_ns = 0.0;         // N s
 };
+
+// the response as the adapters' mappings record it (restitution, force and
+// contact duration, peak force, peak penetration, impulse)
+[[nodiscard]] nlohmann::json to_json(const CollisionResponse& r);
 
 // Clamped Kelvin-Voigt oscillator, closed form (no ramp): with
 // zeta = c / (2 sqrt(k m)) < 1, omega_d = sqrt(k/m) sqrt(1 - zeta^2):
