@@ -193,10 +193,6 @@ void OdeEngine::map_contacts_oracle(const std::vector<FirstTouch>& touches) {
       "calls dCollide; of its contacts the deepest one is kept (a prism reports each vertex on "
       "both faces, and several soft contacts would add their springs)";
   add_common_mapping();
-  extra_ = {{"step_s", step_s_},
-            {"substeps", substeps_},
-            {"ode_configuration", internal::ode::ode_configuration()},
-            {"ode_pkgconfig_version", internal::ode::ode_pkgconfig_version()}};
 }
 
 // native and inject: the rule of every pair (no probe: nothing is known of
@@ -276,7 +272,14 @@ void OdeEngine::map_contacts_native() {
         // nothing more to say
       }
       jp["not_expressed"] = lost;
-      if (pair.has_friction()) jp["friction"] = internal::ode::friction_mapping(pair.friction);
+      if (pair.has_friction()) {
+        jp["friction"] = internal::ode::friction_mapping(pair.friction);
+        jp["friction"]["face_rows"] =
+            "with friction every pressed row of the pair takes the implicit damping c / n (n rows: "
+            "one CFM for all, so dWorldStep's friction bounds follow the spread law's shares) and "
+            "the rest of its share, c_i - c / n, as a force applied before the step along its "
+            "normal from its separation speed (ode_contact_mapping.hpp, face_row)";
+      }
     }
     pairs.push_back(jp);
   }
@@ -296,13 +299,13 @@ void OdeEngine::map_contacts_native() {
       "point of the plane (a prism reports each vertex on both faces, and a vertex two convex "
       "pieces share once per piece: ode_pair_contact.cpp), the law spread over their depths";
   add_common_mapping();
+}
+
+void OdeEngine::add_common_mapping() {
   extra_ = {{"step_s", step_s_},
             {"substeps", substeps_},
             {"ode_configuration", internal::ode::ode_configuration()},
             {"ode_pkgconfig_version", internal::ode::ode_pkgconfig_version()}};
-}
-
-void OdeEngine::add_common_mapping() {
   mapping_["integrator"] =
       "ODE's semi-implicit Euler (velocity first, then position with the new velocity): "
       "positions under constant acceleration lead the exact parabola by g h t / 2; orientation "
