@@ -56,6 +56,20 @@ double depth_inside(const Shape& shape, const Vec2& p) {
   return inside ? nearest : -nearest;
 }
 
+// a pair whose friction can hold a face: friction with a polygon on either
+// side. Its geometry gives the face's spread and, on a half-plane, takes the
+// line of action from the polygon's own points (pair_geometry.hpp); its damping
+// has the face's couple. A curved body's inside points span a short arc (the
+// ellipse of the measured impacts: ~2 mm, a couple of ~1e-3 of its rotation's
+// rate over a contact), so its pairs keep the convex closed form's speed.
+bool friction_on_a_face(const ContactPair& p, const std::vector<Body>& bodies) {
+  if (!p.has_friction()) return false;
+  for (const int i : {p.body_a, p.body_b}) {
+    if (std::holds_alternative<Polygon>(bodies[static_cast<std::size_t>(i)].shape)) return true;
+  }
+  return false;
+}
+
 bool any_friction(const std::vector<ContactPair>& pairs) {
   for (const ContactPair& p : pairs) {
     if (p.has_friction()) return true;
@@ -78,7 +92,9 @@ ContactDynamics::ContactDynamics(const Case& c, GeometryMode mode, DetectionMode
     }
     geometry_.push_back(std::make_unique<PairGeometry>(c.bodies[static_cast<std::size_t>(p.body_a)],
                                                        c.bodies[static_cast<std::size_t>(p.body_b)],
-                                                       mode, detection, p.has_friction()));
+                                                       mode, detection,
+                                                       friction_on_a_face(p, c.bodies)));
+    face_.push_back(friction_on_a_face(p, c.bodies));
   }
   bodies_ = c.bodies;
   for (const Body& b : bodies_) {
@@ -210,7 +226,7 @@ void ContactDynamics::derivative(const Eigen::VectorXd& y, Eigen::VectorXd& dy) 
     const Vec2 f = e.force_n * e.geometry.normal;
     model_.add_point_force(p.body_b, q_, e.geometry.point_b_m, f, gen_force_);
     model_.add_point_force(p.body_a, q_, e.geometry.point_a_m, -f, gen_force_);
-    if (p.has_friction()) add_damping_couple(k, e);
+    if (face_[static_cast<std::size_t>(k)]) add_damping_couple(k, e);
   }
   if (has_friction_) {
     add_friction();

@@ -134,6 +134,7 @@ class ContactDynamics final : public OdeSystem {
   PlanarModel model_;
   std::vector<ContactPair> pairs_;
   GeometryMode mode_;
+  std::vector<bool> face_;  // per pair: friction on a face (contact_dynamics.cpp)
   std::vector<std::unique_ptr<PairGeometry>> geometry_;
   std::vector<PairMode> modes_;
   std::vector<PairEvaluation> last_;

@@ -28,10 +28,11 @@ enum class DetectionMode { fast, brute };
 class PairGeometry {
  public:
   // throws std::invalid_argument when the pair is not supported (see supported).
-  // with_friction: a pair with friction uses ContactGeometry::spread_m2, so
-  // fast detection goes to the trees, not to the closed form of
-  // convex_line_contact.hpp, which does not compute it; on a half-plane its
-  // line of action comes from the body's own points (pair_geometry.cpp)
+  // with_friction: a pair whose friction can hold a face (a polygon's; see
+  // contact_dynamics.cpp) uses ContactGeometry::spread_m2, so fast detection
+  // goes to the trees, not to the closed form of convex_line_contact.hpp,
+  // which does not compute it; on a half-plane its line of action comes from
+  // the body's own points (pair_geometry.cpp)
   PairGeometry(const Body& a, const Body& b, GeometryMode mode,
                DetectionMode detection = DetectionMode::fast, bool with_friction = false);
 
