@@ -50,7 +50,8 @@ struct ContactGeometry {
   // of those points' positions along the tangent about the line of action,
   // sum_i d_i ((p_i - p) x n)^2 / sum_i d_i; 0 at one point. The law's
   // damping spread over the points by depth (the weights that place the line
-  // of action) has a couple -c spread omega besides its force (coulomb_friction.hpp)
+  // of action) has a couple -c spread omega besides its force, applied to
+  // pairs whose friction can hold a face (contact_dynamics.cpp)
   double spread_m2 = 0.0;
 
   [[nodiscard]] double penetration_m() const { return gap_m < 0.0 ? -gap_m : 0.0; }
