@@ -75,6 +75,8 @@ class OdeEngine final : public Engine {
  private:
   void map_contacts_oracle(const std::vector<FirstTouch>& touches);
   void map_contacts_native();
+  // a fresh mapping with the fields every mode records, then the mode writes its own
+  void start_mapping();
   void add_common_mapping();
   void add_native_joints(std::size_t p);
   [[nodiscard]] double separation_speed_mps(const dContactGeom& g) const;

@@ -169,12 +169,7 @@ void OdeEngine::map_contacts_oracle(const std::vector<FirstTouch>& touches) {
     pairs.push_back(jp);
   }
 
-  mapping_ = nlohmann::json::object();
-  mapping_["engine"] = "ode";
-  mapping_["mode"] = settings_.mode;
-  mapping_["dt_s"] = settings_.dt_s;
-  mapping_["substeps"] = substeps_;
-  mapping_["step_s"] = step_s_;
+  start_mapping();
   mapping_["substeps_how"] =
       settings_.substeps > 0
           ? std::string("set by ode.substeps")
@@ -283,12 +278,7 @@ void OdeEngine::map_contacts_native() {
     }
     pairs.push_back(jp);
   }
-  mapping_ = nlohmann::json::object();
-  mapping_["engine"] = "ode";
-  mapping_["mode"] = settings_.mode;
-  mapping_["dt_s"] = settings_.dt_s;
-  mapping_["substeps"] = substeps_;
-  mapping_["step_s"] = step_s_;
+  start_mapping();
   mapping_["substeps_how"] =
       substeps_ == 1 ? std::string("none: ODE steps at dt, the step given")
                      : fmt::format("set by ode.substeps: {} steps per dt", substeps_);
@@ -299,6 +289,15 @@ void OdeEngine::map_contacts_native() {
       "point of the plane (a prism reports each vertex on both faces, and a vertex two convex "
       "pieces share once per piece: ode_pair_contact.cpp), the law spread over their depths";
   add_common_mapping();
+}
+
+void OdeEngine::start_mapping() {
+  mapping_ = nlohmann::json::object();
+  mapping_["engine"] = "ode";
+  mapping_["mode"] = settings_.mode;
+  mapping_["dt_s"] = settings_.dt_s;
+  mapping_["substeps"] = substeps_;
+  mapping_["step_s"] = step_s_;
 }
 
 void OdeEngine::add_common_mapping() {

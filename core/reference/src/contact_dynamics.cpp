@@ -90,11 +90,10 @@ ContactDynamics::ContactDynamics(const Case& c, GeometryMode mode, DetectionMode
     if (p.body_a < 0 || p.body_a >= nb || p.body_b < 0 || p.body_b >= nb || p.body_a == p.body_b) {
       throw std::invalid_argument("contact pair '" + p.name + "' needs two different bodies");
     }
+    face_.push_back(friction_on_a_face(p, c.bodies));
     geometry_.push_back(std::make_unique<PairGeometry>(c.bodies[static_cast<std::size_t>(p.body_a)],
                                                        c.bodies[static_cast<std::size_t>(p.body_b)],
-                                                       mode, detection,
-                                                       friction_on_a_face(p, c.bodies)));
-    face_.push_back(friction_on_a_face(p, c.bodies));
+                                                       mode, detection, face_.back()));
   }
   bodies_ = c.bodies;
   for (const Body& b : bodies_) {
