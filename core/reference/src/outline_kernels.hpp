@@ -192,6 +192,12 @@ template <class Inside, class Depth, class Point>
   switch (rule) {
     case ActionPoints::a: return a.first >= 0 || b.first < 0;
     case ActionPoints::b: return !(b.first >= 0 || a.first < 0);
+    case ActionPoints::vertex_a:
+      if (a.points == 1) return true;
+      break;
+    case ActionPoints::vertex_b:
+      if (b.points == 1) return false;
+      break;
     case ActionPoints::more: break;
   }
   return a.points > b.points || (a.points == b.points && a_deepest);

@@ -107,8 +107,11 @@ struct BoundaryHit {
 // (their depth-weighted centroid, SPEC §1): the body with more of them (the
 // paper's rule, `more`), or always body a's / body b's (a pair with friction
 // on a half-plane: the half-plane's points sample a straight line at a spacing
-// set by its extent, the body's outline is its shape; pair_geometry.hpp)
-enum class ActionPoints { more, a, b };
+// set by its extent, the body's outline is its shape; pair_geometry.hpp), or
+// body a's / b's when that body (a polygon, its points its vertices) has
+// exactly one point inside and the other's points sample a line or curve
+// (vertex_a / vertex_b: a vertex contact acts at the vertex; else `more`)
+enum class ActionPoints { more, a, b, vertex_a, vertex_b };
 
 class OutlineContactSearch {
  public:
