@@ -113,7 +113,10 @@ int run_check(const CheckOptions& opt) {
     } else {
       ++known;
     }
-    const char* label = !fails ? "KNOWN BREACH" : o.passed ? "UNEXPECTED PASS" : "BREACH";
+    const char* label = !fails           ? "KNOWN BREACH"
+                        : o.passed       ? "UNEXPECTED PASS"
+                        : o.beyond_range ? "BEYOND KNOWN BREACH"
+                                         : "BREACH";
     std::printf("%s %s.%s %s vs %s%s: %s  [why: %s]\n", label, o.threshold.case_name.c_str(),
                 o.threshold.engine.c_str(), o.threshold.metric.c_str(),
                 o.threshold.against.c_str(),

@@ -65,6 +65,63 @@ std::string test_name(const CheckOutcome& o) {
   return name;
 }
 
+// A known breach's expected range: `expected = [min, max]` (finite numbers,
+// min <= max), required with known_breach (a known breach without one could
+// never fail) and refused without it; `expected_bound` (two expressions, the
+// derivation) and `expected_why` (its words) go with it.
+void read_expected_range(const std::string& file, const std::string& where,
+                         const toml::table& t, Threshold& th) {
+  const toml::node* e = t.get("expected");
+  const bool known = t.get("known_breach") != nullptr;
+  if (!known) {
+    for (const char* key : {"expected", "expected_bound", "expected_why"}) {
+      if (const toml::node* n = t.get(key)) {
+        throw InputError(file, line_of(*n), where + "." + key,
+                         "belongs to a known breach only (its expected range); this threshold "
+                         "has no known_breach");
+      }
+    }
+    return;
+  }
+  if (e == nullptr) {
+    throw InputError(file, th.line, where + ".expected",
+                     "missing: a known breach states the range its mechanism gives, expected = "
+                     "[min, max] in the metric's units (with expected_bound and expected_why); "
+                     "without one it could never fail");
+  }
+  const toml::array* a = e->as_array();
+  std::optional<double> lo;
+  std::optional<double> hi;
+  if (a != nullptr && a->size() == 2) {
+    lo = (*a)[0].is_number() ? (*a)[0].value<double>() : std::nullopt;
+    hi = (*a)[1].is_number() ? (*a)[1].value<double>() : std::nullopt;
+  }
+  if (!lo || !hi || !std::isfinite(*lo) || !std::isfinite(*hi) || *lo > *hi) {
+    throw InputError(file, line_of(*e), where + ".expected",
+                     fmt::format("must be [min, max], two finite numbers with min <= max (got {})",
+                                 describe(*e)));
+  }
+  th.expected_min = *lo;
+  th.expected_max = *hi;
+  if (const toml::node* b = t.get("expected_bound")) {
+    const toml::array* ba = b->as_array();
+    const bool ok = ba != nullptr && ba->size() == 2 && (*ba)[0].is_string() &&
+                    (*ba)[1].is_string();
+    if (!ok) {
+      throw InputError(file, line_of(*b), where + ".expected_bound",
+                       fmt::format("must be two expressions as strings, [\"min\", \"max\"] "
+                                   "(got {})",
+                                   describe(*b)));
+    }
+  }
+  const toml::node* w = t.get("expected_why");
+  if (w == nullptr || !w->is_string() || w->as_string()->get().empty()) {
+    throw InputError(file, w != nullptr ? line_of(*w) : th.line, where + ".expected_why",
+                     "must be a non-empty string: the mechanism the expected range comes from");
+  }
+  th.expected_why = w->as_string()->get();
+}
+
 }  // namespace
 
 std::vector<Threshold> load_thresholds(const std::filesystem::path& path) {
@@ -145,7 +202,7 @@ ThresholdsFile load_thresholds_file(const std::filesystem::path& path) {
   }
   static const std::vector<std::string> allowed = {
       "case", "engine", "against", "metric", "episode", "atol", "rtol", "why", "known_breach",
-      "by_construction", "bound"};
+      "by_construction", "bound", "expected", "expected_bound", "expected_why"};
   const std::vector<std::string> metrics(metric_names().begin(), metric_names().end());
   std::vector<Threshold> out;
   for (std::size_t i = 0; i < arr->size(); ++i) {
@@ -202,6 +259,7 @@ ThresholdsFile load_thresholds_file(const std::filesystem::path& path) {
       }
       th.by_construction = n->as_boolean()->get();
     }
+    read_expected_range(file, where, *t, th);
     if (metric_names().count(th.metric) == 0) {
       throw InputError(file, line_of(*t->get("metric")), where + ".metric",
                        fmt::format("unknown metric '{}'{}; allowed (SPEC §4): {}", th.metric,
@@ -245,14 +303,15 @@ bool fails_gate(const CheckOutcome& o) {
   // nor is a value that is not a number (a lost episode, a friction figure
   // never reached): it fails a known breach's check too (issue 31)
   if (!std::isfinite(o.value.actual) || !std::isfinite(o.value.desired)) return true;
-  return o.threshold.known_breach.empty() ? !o.passed : o.passed;
+  return o.threshold.known_breach.empty() ? !o.passed : o.passed || o.beyond_range;
 }
 
 const char* outcome_label(const CheckOutcome& o) {
   if (!o.invalid_data.empty()) return "invalid data";
   if (o.threshold.known_breach.empty() || o.value.metric.empty()) return o.passed ? "pass" : "fail";
   if (!std::isfinite(o.value.actual) || !std::isfinite(o.value.desired)) return "fail";
-  return o.passed ? "unexpected pass" : "known breach";
+  if (o.passed) return "unexpected pass";
+  return o.beyond_range ? "beyond its known breach" : "known breach";
 }
 
 std::vector<CheckOutcome> check_thresholds(const std::vector<Threshold>& thresholds,
@@ -295,7 +354,20 @@ std::vector<CheckOutcome> check_thresholds(const std::vector<Threshold>& thresho
       if (!o.passed) {
         o.message = fmt::format("|{:.6g} - {:.6g}| = {:.4g} > {:.4g} (atol {:g} + rtol {:g})",
                                 m.actual, m.desired, deviation, o.limit, th.atol, th.rtol);
-        if (!th.known_breach.empty()) o.message += "; known breach: " + th.known_breach;
+        if (!th.known_breach.empty()) {
+          o.beyond_range = std::isfinite(m.actual) &&
+                           !(m.actual >= th.expected_min && m.actual <= th.expected_max);
+          if (o.beyond_range) {
+            o.message = fmt::format(
+                "beyond its known breach: {:.6g} is outside the expected range [{:.6g}, {:.6g}] "
+                "({}); {}; known breach: {}",
+                m.actual, th.expected_min, th.expected_max, th.expected_why, o.message,
+                th.known_breach);
+          } else {
+            o.message += fmt::format("; known breach, within its expected range [{:.6g}, {:.6g}]: {}",
+                                     th.expected_min, th.expected_max, th.known_breach);
+          }
+        }
       } else if (!th.known_breach.empty()) {
         o.message = fmt::format(
             "unexpected pass: |{:.6g} - {:.6g}| = {:.4g} <= {:.4g}, but the threshold says the "
@@ -356,6 +428,10 @@ std::string junit_xml(const std::vector<CheckOutcome>& outcomes,
     if (!o.threshold.known_breach.empty()) {
       x += fmt::format("        <property name=\"known_breach\" value=\"{}\"/>\n",
                        xml_escaped(o.threshold.known_breach));
+      x += fmt::format("        <property name=\"expected_min\" value=\"{:.9g}\"/>\n",
+                       o.threshold.expected_min);
+      x += fmt::format("        <property name=\"expected_max\" value=\"{:.9g}\"/>\n",
+                       o.threshold.expected_max);
     }
     x += "      </properties>\n";
     if (fails_gate(o)) {
@@ -391,13 +467,19 @@ std::string markdown_summary(const std::vector<CheckOutcome>& outcomes,
   for (const auto& r : diverged_runs) md += fmt::format("- **diverged**: {}\n", r);
   for (const auto& f : invalid) md += fmt::format("- **invalid data**: {}\n", f.describe());
   if (failed + known == 0) return md;
-  md += "| case | engine | metric | outcome | value | limit | why |\n|---|---|---|---|---|---|---|\n";
+  md += "| case | engine | metric | outcome | deviation | limit | known breach: value in its expected "
+        "range | why |\n|---|---|---|---|---|---|---|---|\n";
   // every failure and every known breach (issue 31: a CI reader sees them all)
   for (const auto& o : outcomes) {
     if (o.passed && !fails_gate(o)) continue;
-    md += fmt::format("| {} | {} | {} | {} | {:.4g} | {:.4g} | {} |\n", o.threshold.case_name,
-                      o.threshold.engine, test_name(o), outcome_label(o),
-                      std::abs(o.value.actual - o.value.desired), o.limit,
+    const std::string range =
+        o.threshold.known_breach.empty()
+            ? std::string("-")
+            : fmt::format("{:.4g} in [{:.4g}, {:.4g}]", o.value.actual, o.threshold.expected_min,
+                          o.threshold.expected_max);
+    md += fmt::format("| {} | {} | {} | {} | {:.4g} | {:.4g} | {} | {} |\n",
+                      o.threshold.case_name, o.threshold.engine, test_name(o), outcome_label(o),
+                      std::abs(o.value.actual - o.value.desired), o.limit, range,
                       o.threshold.known_breach.empty() ? o.threshold.why
                                                        : o.threshold.known_breach);
   }

@@ -131,6 +131,59 @@ def round_up_2_significant(b):
     return math.ceil(b / unit * (1 - REL_ROUNDING)) * unit
 
 
+def round_out_2_significant(b, up):
+    """b rounded to 2 significant digits away from the range's inside (up: towards
+    +inf for a top, else towards -inf for a bottom)"""
+    if b == 0:
+        return b
+    if (b > 0) == up:
+        return math.copysign(round_up_2_significant(abs(b)), b)
+    unit = 10.0 ** (math.floor(math.log10(abs(b))) - 1)
+    return math.copysign(math.floor(abs(b) / unit * (1 + REL_ROUNDING)) * unit, b)
+
+
+def expected_problems(th, constants):
+    """A known breach's expected range: `expected = [min, max]` the metric's value
+    its mechanism gives, `expected_bound` the two expressions it comes from,
+    `expected_why` the words; each end no tighter than its expression and not
+    padded beyond it (10 % of it or its rounding outwards to 2 digits)."""
+    keys = ("expected", "expected_bound", "expected_why")
+    if not th.get("known_breach"):
+        return [f"{k} without known_breach" for k in keys if k in th]
+    problems = [f"known breach without {k}: state the range its mechanism gives"
+                for k in keys if not th.get(k)]
+    if problems:
+        return problems
+    rng, exprs = th["expected"], th["expected_bound"]
+    if not (isinstance(rng, list) and len(rng) == 2 and all(
+            isinstance(v, (int, float)) and not isinstance(v, bool) for v in rng)):
+        return [f"expected = {rng!r}: give [min, max], two numbers"]
+    if not (isinstance(exprs, list) and len(exprs) == 2 and all(isinstance(e, str) for e in exprs)):
+        return [f"expected_bound = {exprs!r}: give two expressions as strings"]
+    ends = []
+    for text in exprs:
+        try:
+            ends.append(evaluate(text, constants))
+        except BoundError as e:
+            problems.append(f"expected_bound \"{text}\": {e}")
+    if problems:
+        return problems
+    lo_b, hi_b = ends
+    lo, hi = float(rng[0]), float(rng[1])
+    if not (math.isfinite(lo_b) and math.isfinite(hi_b)) or lo_b > hi_b:
+        return [f"expected_bound evaluates to [{lo_b:.6g}, {hi_b:.6g}]: must be finite, min <= max"]
+    slack = REL_ROUNDING * max(abs(lo_b), abs(hi_b), 1e-300)
+    if lo > lo_b + slack:
+        problems.append(f"expected min {lo:g} is tighter than its bound {lo_b:.6g}")
+    elif lo < min(lo_b - 0.1 * abs(lo_b), round_out_2_significant(lo_b, False)) - slack:
+        problems.append(f"expected min {lo:g} is padded below its bound {lo_b:.6g}")
+    if hi < hi_b - slack:
+        problems.append(f"expected max {hi:g} is tighter than its bound {hi_b:.6g}")
+    elif hi > max(hi_b + 0.1 * abs(hi_b), round_out_2_significant(hi_b, True)) + slack:
+        problems.append(f"expected max {hi:g} is padded above its bound {hi_b:.6g}")
+    return problems
+
+
 def classify(th, constants):
     """(category, problems): category one of derived, by_construction, known_breach, other."""
     problems = []
@@ -156,6 +209,7 @@ def classify(th, constants):
     if not isinstance(t, (int, float)) or isinstance(t, bool):
         problems.append("no numeric atol or rtol")
         t = None
+    problems += expected_problems(th, constants)
     why = th.get("why", "")
     for pattern, what in FORBIDDEN:
         if pattern.search(why):
@@ -223,8 +277,20 @@ def self_test():
         "unknown name": (entry('rtol = 0.01\nbound = "omega_k"'), 1),
         "bound and by construction": (entry('rtol = 0.01\nbound = "omega_h"\n'
                                             "by_construction = true"), 1),
-        "known breach with its band": (entry('rtol = 0.01\nbound = "omega_h"\n'
-                                             'known_breach = "k"'), 0),
+        "known breach with its band and range": (entry(
+            'rtol = 0.01\nbound = "omega_h"\nknown_breach = "k"\nexpected = [0.0, 2.1]\n'
+            'expected_bound = ["0", "2 * 1.04"]\nexpected_why = "m"'), 0),
+        "known breach without a range": (entry('rtol = 0.01\nbound = "omega_h"\n'
+                                               'known_breach = "k"'), 1),
+        "known breach, range tighter than its bound": (entry(
+            'rtol = 0.01\nbound = "omega_h"\nknown_breach = "k"\nexpected = [0.0, 2.0]\n'
+            'expected_bound = ["0", "2 * 1.04"]\nexpected_why = "m"'), 1),
+        "known breach, range padded": (entry(
+            'rtol = 0.01\nbound = "omega_h"\nknown_breach = "k"\nexpected = [-1.0, 2.1]\n'
+            'expected_bound = ["0.5", "2 * 1.04"]\nexpected_why = "m"'), 1),
+        "a range without a known breach": (entry(
+            'rtol = 0.01\nbound = "omega_h"\nexpected = [0.0, 2.1]\n'
+            'expected_bound = ["0", "2 * 1.04"]\nexpected_why = "m"'), 1),
         "a pad in the why": (entry('rtol = 0.01\nbound = "omega_h"').replace(
             'why = "w"', 'why = "omega h + 1 %"'), 1),
     }

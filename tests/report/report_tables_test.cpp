@@ -19,7 +19,7 @@ MetricValue metric(const std::string& engine, const std::string& name, int episo
   m.actual = actual;
   m.desired = desired;
   m.error = error;
-  m.unit = "1";
+  m.unit.assign(1, '1');  // not = "1": GCC 12 warns falsely (-Wstringop-overflow) when inlined
   return m;
 }
 

@@ -26,6 +26,16 @@ struct Threshold {
   // shows it as a failure, and does not fail the gate on it; a pass then
   // fails the gate ("unexpected pass": the reason no longer holds)
   std::string known_breach;
+  // a known breach's expected range (issue 31): the metric's value its
+  // mechanism gives, [expected_min, expected_max] in the metric's own units
+  // (the error itself for an error metric); a value outside it fails the gate
+  // ("beyond its known breach"), so a known breach can fail like any band.
+  // Required with known_breach, refused without it; the derivation is
+  // `expected_bound` (two expressions, checked by
+  // tests/python/threshold_derivations.py) and `expected_why`
+  double expected_min = 0.0;
+  double expected_max = 0.0;
+  std::string expected_why;
   // the tolerance holds by construction (e.g. a joint that is a generalized
   // coordinate), not by a numerical bound; the report labels it so
   bool by_construction = false;
@@ -60,13 +70,16 @@ struct CheckOutcome {
   // non-empty: the run or its baseline holds NaN or inf (run_validity.hpp),
   // what and where; the check fails whatever its value
   std::string invalid_data;
+  // a known breach whose finite value lies outside its expected range
+  bool beyond_range = false;
 };
 
 // whether an outcome fails the gate: a breach that is not a known one, a
-// known breach that passed, a metric that was not computed, or a run or
-// baseline with invalid data
+// known breach that passed or left its expected range, a metric that was not
+// computed or is not a number, or a run or baseline with invalid data
 [[nodiscard]] bool fails_gate(const CheckOutcome& o);
-// "pass", "fail", "known breach", "unexpected pass" or "invalid data"
+// "pass", "fail", "known breach", "beyond its known breach", "unexpected
+// pass" or "invalid data"
 [[nodiscard]] const char* outcome_label(const CheckOutcome& o);
 
 // Every threshold against the metrics; a threshold that matches no metric
