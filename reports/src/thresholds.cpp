@@ -351,7 +351,14 @@ std::vector<CheckOutcome> check_thresholds(const std::vector<Threshold>& thresho
       o.limit = th.atol + th.rtol * std::abs(m.desired);
       const double deviation = std::abs(m.actual - m.desired);
       o.passed = deviation <= o.limit;  // NaN fails
-      if (!o.passed) {
+      if (!std::isfinite(m.actual) || !std::isfinite(m.desired)) {
+        // not a value: a lost episode, a figure never reached, NaN or inf; it
+        // fails whatever the threshold expects (a known breach included)
+        o.message = fmt::format(
+            "not a number: actual {} against {} (a lost or extra episode, a friction figure "
+            "never reached, NaN or inf): fails whatever the threshold expects",
+            m.actual, m.desired);
+      } else if (!o.passed) {
         o.message = fmt::format("|{:.6g} - {:.6g}| = {:.4g} > {:.4g} (atol {:g} + rtol {:g})",
                                 m.actual, m.desired, deviation, o.limit, th.atol, th.rtol);
         if (!th.known_breach.empty()) {
@@ -364,8 +371,8 @@ std::vector<CheckOutcome> check_thresholds(const std::vector<Threshold>& thresho
                 m.actual, th.expected_min, th.expected_max, th.expected_why, o.message,
                 th.known_breach);
           } else {
-            o.message += fmt::format("; known breach, within its expected range [{:.6g}, {:.6g}]: {}",
-                                     th.expected_min, th.expected_max, th.known_breach);
+            o.message += fmt::format("; known breach: {} (within its expected range [{:.6g}, {:.6g}])",
+                                     th.known_breach, th.expected_min, th.expected_max);
           }
         }
       } else if (!th.known_breach.empty()) {

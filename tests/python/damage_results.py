@@ -22,6 +22,11 @@ broken writer would (issue 24). KIND:
     velocity_nan      bodies/ball/velocity row 200 is NaN
     force_nan         contacts row 0 has force_n NaN
 
+  a known breach's value (check fails it, exit 1; issue 31, tests/cli/cli_test.cpp):
+    events_lost       events keeps no rows: every episode lost
+    impulse_nan       events row 0 has impulse NaN
+    peak_beyond       events row 0 has peak_force x 1000
+
 Every other dataset and attribute is left as it is; a replaced dataset keeps
 its attributes (`unit`, `fields`).
 """
@@ -50,7 +55,7 @@ def main():
     shutil.copyfile(good, out)
     with h5py.File(out, "r+") as f:
         r = f[run]
-        ball = r["bodies/ball"]
+        ball = r["bodies/ball"] if "bodies/ball" in r else None
         if kind == "time_int64":
             t = ball["time"][()]
             replace(ball, "time", data=np.round(t * 1000).astype("<i8"))
@@ -93,6 +98,16 @@ def main():
             rows = r["contacts"][()]
             rows["force_n"][0] = np.nan
             r["contacts"][...] = rows
+        elif kind == "events_lost":
+            rows = r["events"][()]
+            replace(r, "events", data=rows[:0], maxshape=(None,), chunks=True)
+        elif kind in ("impulse_nan", "peak_beyond"):
+            rows = r["events"][()]
+            if kind == "impulse_nan":
+                rows["impulse"][0] = np.nan
+            else:
+                rows["peak_force"][0] *= 1000.0
+            r["events"][...] = rows
         else:
             sys.exit(f"unknown KIND {kind!r}\n{__doc__}")
 

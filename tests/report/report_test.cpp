@@ -122,6 +122,9 @@ metric = "peak_force"
 rtol = 0.05
 why = "impulsive: fails"
 known_breach = "rigid contact has no stiffness"
+expected = [1e3, 1e7]
+expected_bound = ["1e3", "1e7"]
+expected_why = "one step's impulse over the step"
 )");
   ReportOptions o = options("out");
   o.thresholds = dir_ / "t.toml";

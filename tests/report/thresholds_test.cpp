@@ -33,6 +33,12 @@ Threshold band(const std::string& engine, double rtol, const std::string& known 
   t.rtol = rtol;
   t.why = "test";
   t.known_breach = known;
+  if (!known.empty()) {
+    // a known breach states its expected range (issue 31); these tests' values lie in it
+    t.expected_min = 0.0;
+    t.expected_max = 1.0;
+    t.expected_why = "test";
+  }
   return t;
 }
 
@@ -108,6 +114,33 @@ TEST(Thresholds, NanFailsAKnownBreachToo) {
   EXPECT_STREQ(outcome_label(finite[0]), "known breach");
 }
 
+// issue 31: a known breach can fail: a finite value outside its expected
+// range is "beyond its known breach" and fails the gate, on either side
+TEST(Thresholds, AKnownBreachBeyondItsExpectedRangeFails) {
+  Threshold t = band("box2d", 0.01, "impulsive restitution");
+  t.expected_min = 0.6;
+  t.expected_max = 0.75;
+  t.expected_why = "the rigid 1-D restitution";
+  for (const auto& [actual, beyond] : {std::pair{0.70, false}, std::pair{0.6, false},
+                                       std::pair{0.75, false}, std::pair{0.5, true},
+                                       std::pair{0.76, true}, std::pair{-0.7, true}}) {
+    const auto out = check_thresholds({t}, {value("box2d", actual, 0.8)}, {});
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_EQ(fails_gate(out[0]), beyond) << actual;
+    EXPECT_STREQ(outcome_label(out[0]), beyond ? "beyond its known breach" : "known breach")
+        << actual;
+    if (beyond) {
+      EXPECT_NE(out[0].message.find("outside the expected range [0.6, 0.75]"), std::string::npos)
+          << out[0].message;
+      EXPECT_NE(out[0].message.find("the rigid 1-D restitution"), std::string::npos);
+    }
+  }
+  // the range does not excuse a pass: inside the band is still an unexpected pass
+  const auto inside = check_thresholds({t}, {value("box2d", 0.8, 0.8)}, {});
+  EXPECT_STREQ(outcome_label(inside[0]), "unexpected pass");
+  EXPECT_TRUE(fails_gate(inside[0]));
+}
+
 // issue 31: summary.md lists every known breach, not the first 50
 TEST(Thresholds, TheSummaryListsEveryKnownBreach) {
   std::vector<Threshold> bands;
@@ -159,15 +192,46 @@ rtol = 0.01
 why = "1 % of e"
 )";
 
+constexpr const char* kRange =
+    "expected = [0.5, 0.9]\nexpected_bound = [\"0.5\", \"0.9\"]\nexpected_why = \"rigid\"\n";
+
 TEST_F(ThresholdsFile, ReadsKnownBreachAndByConstruction) {
-  const auto t = load_thresholds(
-      write(std::string(kEntry) + "known_breach = \"impulsive\"\nby_construction = true\n"));
+  const auto t = load_thresholds(write(std::string(kEntry) + "known_breach = \"impulsive\"\n" +
+                                       kRange + "by_construction = true\n"));
   ASSERT_EQ(t.size(), 1u);
   EXPECT_EQ(t[0].known_breach, "impulsive");
+  EXPECT_EQ(t[0].expected_min, 0.5);
+  EXPECT_EQ(t[0].expected_max, 0.9);
+  EXPECT_EQ(t[0].expected_why, "rigid");
   EXPECT_TRUE(t[0].by_construction);
   const auto plain = load_thresholds(write(kEntry));
   EXPECT_TRUE(plain[0].known_breach.empty());
   EXPECT_FALSE(plain[0].by_construction);
+}
+
+// issue 31: a known breach without a range could never fail; a range belongs
+// to a known breach only; a range is two finite numbers, min <= max
+TEST_F(ThresholdsFile, RefusesAKnownBreachWithoutItsRangeAndBadRanges) {
+  const std::string known = "known_breach = \"impulsive\"\n";
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {known, "expected: missing"},
+      {known + "expected = [0.9, 0.5]\nexpected_why = \"w\"\n", "min <= max"},
+      {known + "expected = [0.5]\nexpected_why = \"w\"\n", "two finite numbers"},
+      {known + "expected = [\"0\", 1]\nexpected_why = \"w\"\n", "two finite numbers"},
+      {known + "expected = [0.5, nan]\nexpected_why = \"w\"\n", "two finite numbers"},
+      {known + "expected = [0.5, 0.9]\n", "expected_why"},
+      {known + "expected = [0.5, 0.9]\nexpected_why = \"w\"\nexpected_bound = \"0.5\"\n",
+       "expected_bound"},
+      {std::string(kRange), "belongs to a known breach only"},
+  };
+  for (const auto& [text, says] : bad) {
+    try {
+      (void)load_thresholds(write(std::string(kEntry) + text));
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST_F(ThresholdsFile, RefusesBadKnownBreachAndByConstruction) {
