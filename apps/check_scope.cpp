@@ -11,6 +11,7 @@
 #include "cli_common.hpp"
 #include "planarbench/case_loader.hpp"
 #include "planarbench/engines.hpp"
+#include "planarbench/reports/thresholds.hpp"
 
 namespace pb::cli {
 
@@ -57,7 +58,8 @@ nlohmann::json derived_settings(const std::string& engine, const Case& derived) 
 std::vector<RunOutOfScope> runs_out_of_scope(const ResultsFile& results,
                                              const std::vector<Case>& cases,
                                              const std::filesystem::path& thresholds_file,
-                                             const std::vector<std::string>& covers) {
+                                             const std::vector<std::string>& covers,
+                                             const std::map<std::string, std::string>& truths) {
   std::vector<RunOutOfScope> out;
   for (std::size_t ci = 0; ci < results.cases.size() && ci < cases.size(); ++ci) {
     const CaseRuns& cr = results.cases[ci];
@@ -87,8 +89,30 @@ std::vector<RunOutOfScope> runs_out_of_scope(const ResultsFile& results,
       }
     }
     for (const auto& r : cr.runs) {
-      // the truth is judged by no band; an unsupported run has nothing to judge
-      if (r.engine_name == "analytic" || r.status == RunStatus::unsupported) continue;
+      // the truth is judged by no band, but its kind is what the bands assumed
+      // (issue 31: the independent truth failing at run time made the
+      // converged reference the truth, silently)
+      if (r.engine_name == "analytic") {
+        const auto want = truths.find(cr.case_name);
+        if (want == truths.end() || r.status != RunStatus::ok || covered(covers, "", "truth")) {
+          continue;
+        }
+        const auto physics = r.mapping.find("physics");
+        const std::string mode = physics != r.mapping.end() && physics->is_object()
+                                     ? physics->value("mode", std::string())
+                                     : std::string();
+        const std::string kind = truth_kind_of_mode(mode);
+        if (kind != want->second) {
+          out.push_back(RunOutOfScope{
+              fmt::format("{}.analytic", cr.case_name),
+              {fmt::format("the truth is {} (physics.mode \"{}\"; derived for {})",
+                           kind.empty() ? std::string("of no known kind") : "\"" + kind + "\"",
+                           mode, "\"" + want->second + "\"")}});
+        }
+        continue;
+      }
+      // an unsupported run has nothing to judge
+      if (r.status == RunStatus::unsupported) continue;
       RunOutOfScope s{fmt::format("{}.{}", cr.case_name, r.engine_name), case_differences};
       const nlohmann::json want = derived_settings(r.engine_name, derived);
       for (const auto& [key, value] : want.items()) {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -32,9 +33,13 @@ struct RunOutOfScope {
 // ("contact.stiffness", "gravity"), "foreknowledge" (which also admits
 // steps_before_start > 0), "outline_points" or "case_file" (a case file that
 // differs from the case text stored with the run).
+// `truths` (the thresholds file's [truths], case -> kind) refuses a truth run
+// (the analytic engine's) of another kind than its case's bands assumed,
+// unless `covers` holds "truth".
 [[nodiscard]] std::vector<RunOutOfScope> runs_out_of_scope(
     const ResultsFile& results, const std::vector<Case>& cases,
     const std::filesystem::path& thresholds_file,
-    const std::vector<std::string>& covers);
+    const std::vector<std::string>& covers,
+    const std::map<std::string, std::string>& truths = {});
 
 }  // namespace pb::cli

@@ -81,7 +81,8 @@ int run_check(const CheckOptions& opt) {
     cases.push_back(parse_case(cr.case_text, cr.case_path, cr.case_name, case_keys));
   }
   refuse_runs_out_of_scope(opt.results,
-                           runs_out_of_scope(results, cases, opt.thresholds, file.covers));
+                           runs_out_of_scope(results, cases, opt.thresholds, file.covers,
+                                                             file.truths));
 
   std::vector<MetricValue> metrics;
   std::vector<std::string> diverged;

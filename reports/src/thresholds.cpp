@@ -150,11 +150,13 @@ ThresholdsFile load_thresholds_file(const std::filesystem::path& path) {
                      std::string(e.description()));
   }
   for (const auto& [key, node] : doc) {
-    if (key.str() != "threshold" && key.str() != "constants" && key.str() != "covers") {
-      throw InputError(file, line_of(node), std::string(key.str()),
-                       fmt::format("unknown key{}; a thresholds file holds `covers`, a "
-                                   "[constants] table and [[threshold]] entries only",
-                                   did_you_mean(key.str(), {"threshold", "constants", "covers"})));
+    if (key.str() != "threshold" && key.str() != "constants" && key.str() != "covers" &&
+        key.str() != "truths") {
+      throw InputError(
+          file, line_of(node), std::string(key.str()),
+          fmt::format("unknown key{}; a thresholds file holds `covers`, a [constants] table, a "
+                      "[truths] table and [[threshold]] entries only",
+                      did_you_mean(key.str(), {"threshold", "constants", "covers", "truths"})));
     }
   }
   ThresholdsFile loaded;
@@ -173,6 +175,24 @@ ThresholdsFile load_thresholds_file(const std::filesystem::path& path) {
         throw InputError(file, line_of(n), "covers", bad(n));
       }
       loaded.covers.push_back(n.as_string()->get());
+    }
+  }
+  // [truths]: the kind of truth each case's bands were derived with
+  if (const toml::node* tr = doc.get("truths")) {
+    const toml::table* tab = tr->as_table();
+    if (tab == nullptr) {
+      throw InputError(file, line_of(*tr), "truths",
+                       fmt::format("must be a table of case = \"kind\" (got {})", describe(*tr)));
+    }
+    for (const auto& [key, node] : *tab) {
+      const auto& kinds = truth_kinds();
+      const std::string* kind = node.is_string() ? &node.as_string()->get() : nullptr;
+      if (kind == nullptr || std::find(kinds.begin(), kinds.end(), *kind) == kinds.end()) {
+        throw InputError(file, line_of(node), "truths." + std::string(key.str()),
+                         fmt::format("must be one of {} (got {})", join_words(kinds),
+                                     describe(node)));
+      }
+      loaded.truths[std::string(key.str())] = *kind;
     }
   }
   // [constants]: named figures the bounds use, each an expression as a string;
@@ -293,6 +313,23 @@ ThresholdsFile load_thresholds_file(const std::filesystem::path& path) {
   }
   loaded.thresholds = std::move(out);
   return loaded;
+}
+
+const std::vector<std::string>& truth_kinds() {
+  static const std::vector<std::string> kinds = {"closed form", "independent",
+                                                 "closed form, then independent", "converged",
+                                                 "closed form, then converged"};
+  return kinds;
+}
+
+std::string truth_kind_of_mode(const std::string& mode) {
+  // the analytic engine's physics.mode (core/analytic/analytic_engine.cpp)
+  if (mode == "closed form") return "closed form";
+  if (mode == "independent integration") return "independent";
+  if (mode == "closed form, then independent integration") return "closed form, then independent";
+  if (mode == "converged reference") return "converged";
+  if (mode == "closed form, then converged reference") return "closed form, then converged";
+  return "";
 }
 
 bool fails_gate(const CheckOutcome& o) {

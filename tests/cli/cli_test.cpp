@@ -498,6 +498,31 @@ TEST(Gate, ALostEpisodeOnAKnownBreachFails) {
   EXPECT_TRUE(contains(c.output, "BEYOND KNOWN BREACH sliding.mujoco episode_count")) << c.output;
 }
 
+// issue 31: the bands of concave_corner were derived against the independent
+// truth ([truths] in cases/thresholds.toml); a run whose truth was the
+// converged reference instead (the independent truth failing at run time) is
+// refused, exit 2, naming the run and what its truth was
+TEST(Gate, ATruthOfAnotherKindIsRefused) {
+  const auto good = work_dir() / "truth_kind.h5";
+  ASSERT_EQ(run("run --case concave_corner --engine analytic,reference --quiet --out " +
+                good.string()).exit_code, 0);
+  const auto damaged = work_dir() / "truth_kind_converged.h5";
+  const std::string py = fmt::format("{} {}/tests/python/damage_results.py {} {} truth_converged "
+                                     "/runs/concave_corner/analytic 2>&1",
+                                     PB_PYTHON, PB_SOURCE_DIR, good.string(), damaged.string());
+  ASSERT_EQ(std::system(py.c_str()), 0);
+  const std::string thresholds = std::string(PB_SOURCE_DIR) + "/cases/thresholds.toml ";
+  // as run: judged (exit 1 only because the other cases' runs are not in the file)
+  const auto judged = run("check --thresholds " + thresholds + good.string());
+  EXPECT_EQ(judged.exit_code, 1) << judged.output;
+  const auto c = run("check --thresholds " + thresholds + damaged.string());
+  EXPECT_EQ(c.exit_code, 2) << c.output;
+  EXPECT_TRUE(contains(c.output, "concave_corner.analytic (the truth is \"converged\" "
+                                 "(physics.mode \"converged reference\"; derived for "
+                                 "\"independent\"))"))
+      << c.output;
+}
+
 TEST(Gate, ValidFileOfTheInvalidDataTestsPasses) {
   ASSERT_FALSE(falling_ball_mujoco().empty());
   const auto c = run("check --thresholds " + mujoco_position_thresholds().string() + " " +

@@ -27,9 +27,13 @@ broken writer would (issue 24). KIND:
     impulse_nan       events row 0 has impulse NaN
     peak_beyond       events row 0 has peak_force x 1000
 
+  another truth (check refuses the run, exit 2; issue 31): RUN is the analytic run
+    truth_converged   its mapping's physics.mode says "converged reference"
+
 Every other dataset and attribute is left as it is; a replaced dataset keeps
 its attributes (`unit`, `fields`).
 """
+import json
 import shutil
 import sys
 
@@ -108,6 +112,10 @@ def main():
             else:
                 rows["peak_force"][0] *= 1000.0
             r["events"][...] = rows
+        elif kind == "truth_converged":
+            mapping = json.loads(r.attrs["mapping"])
+            mapping["physics"]["mode"] = "converged reference"
+            r.attrs["mapping"] = json.dumps(mapping)
         else:
             sys.exit(f"unknown KIND {kind!r}\n{__doc__}")
 

@@ -246,6 +246,12 @@ def check(doc):
     """(rows per engine, offences, constant errors)."""
     constants, errors = evaluate_constants(doc.get("constants", {}))
     counts, offences = {}, []
+    truths = doc.get("truths", {})
+    for case in sorted({th.get("case") for th in doc.get("threshold", [])
+                        if th.get("against") == "truth"}):
+        if case not in truths:
+            offences.append(f"[truths] does not list {case}: state the kind of truth its bands "
+                            "against \"truth\" were derived with")
     for th in doc.get("threshold", []):
         category, problems = classify(th, constants)
         row = counts.setdefault(th.get("engine", "?"), dict.fromkeys(
@@ -259,7 +265,7 @@ def check(doc):
 def self_test():
     """The checks catch an underived, a padded and a too-tight entry; a good one passes."""
     head = ('[constants]\nh = "1e-4"\nomega = "sqrt(1e4 / 1.0)"\nomega_h = "omega * h"\n'
-            "# end of constants\n")
+            '# end of constants\n[truths]\nc = "closed form"\n')
 
     def entry(extra):
         return ('[[threshold]]\ncase = "c"\nengine = "e"\nagainst = "truth"\n'
@@ -300,6 +306,10 @@ def self_test():
         if errors or len(offences) != want:
             failures.append(f"self-test '{label}': {len(offences)} offence(s) {offences}, "
                             f"expected {want}; constant errors {errors}")
+    _, offences, _ = check(tomllib.loads(head.replace('[truths]\nc = "closed form"\n', "")
+                                         + cases["good"][0]))
+    if len(offences) != 1 or "[truths]" not in offences[0]:
+        failures.append(f"self-test: a case missing from [truths] was not named: {offences}")
     _, _, errors = check(tomllib.loads('[constants]\na = "b + 1"\nb = "1"\n'))
     if not errors:
         failures.append("self-test: a constant using one defined below it was accepted")

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -53,7 +54,19 @@ struct Threshold {
 struct ThresholdsFile {
   std::vector<Threshold> thresholds;
   std::vector<std::string> covers;
+  // [truths]: case -> the kind of truth its bands against "truth" were derived
+  // with (truth_kinds()); `check` refuses a run whose truth was another kind
+  // (the independent truth failed at run time and the converged reference
+  // stood in, say). A case not listed is not checked.
+  std::map<std::string, std::string> truths;
 };
+
+// The kinds a [truths] entry names, as the analytic engine's mapping states
+// them (physics.mode): "closed form", "independent", "closed form, then
+// independent", "converged", "closed form, then converged".
+[[nodiscard]] const std::vector<std::string>& truth_kinds();
+// The kind of a truth run from its physics.mode ("" when not one of them).
+[[nodiscard]] std::string truth_kind_of_mode(const std::string& mode);
 
 // Loads and validates a thresholds file (InputError naming file, line, field).
 [[nodiscard]] ThresholdsFile load_thresholds_file(const std::filesystem::path& path);
