@@ -99,7 +99,16 @@ int run_check(const CheckOptions& opt) {
       }
     }
   }
-  const auto outcomes = check_thresholds(thresholds, metrics, invalid);
+  auto outcomes = check_thresholds(thresholds, metrics, invalid);
+  check_step_assumptions(outcomes, [&](const std::string& case_name, const std::string& engine) {
+    for (const auto& cr : results.cases) {
+      if (cr.case_name != case_name) continue;
+      for (const auto& r : cr.runs) {
+        if (r.engine_name == engine) return r.steps;
+      }
+    }
+    return -1L;
+  });
 
   (void)write_text_atomically("--junit", junit, junit_xml(outcomes, diverged, invalid));
   (void)write_text_atomically("--summary", summary, markdown_summary(outcomes, diverged, invalid));
@@ -115,6 +124,7 @@ int run_check(const CheckOptions& opt) {
       ++known;
     }
     const char* label = !fails           ? "KNOWN BREACH"
+                        : !o.assumption.empty() ? "ASSUMPTION BROKEN"
                         : o.passed       ? "UNEXPECTED PASS"
                         : o.beyond_range ? "BEYOND KNOWN BREACH"
                                          : "BREACH";

@@ -222,7 +222,7 @@ ThresholdsFile load_thresholds_file(const std::filesystem::path& path) {
   }
   static const std::vector<std::string> allowed = {
       "case", "engine", "against", "metric", "episode", "atol", "rtol", "why", "known_breach",
-      "by_construction", "bound", "expected", "expected_bound", "expected_why"};
+      "by_construction", "bound", "expected", "expected_bound", "expected_why", "steps_at_most"};
   const std::vector<std::string> metrics(metric_names().begin(), metric_names().end());
   std::vector<Threshold> out;
   for (std::size_t i = 0; i < arr->size(); ++i) {
@@ -280,6 +280,17 @@ ThresholdsFile load_thresholds_file(const std::filesystem::path& path) {
       th.by_construction = n->as_boolean()->get();
     }
     read_expected_range(file, where, *t, th);
+    if (const auto* n = t->get("steps_at_most")) {
+      constexpr std::int64_t kMaxSteps = 1000000000;
+      const auto* v = n->as_integer();
+      if (v == nullptr || v->get() < 1 || v->get() > kMaxSteps) {
+        throw InputError(file, line_of(*n), where + ".steps_at_most",
+                         fmt::format("must be an integer in [1, {}]: the accepted steps the band "
+                                     "assumes at most (got {})",
+                                     kMaxSteps, describe(*n)));
+      }
+      th.steps_at_most = static_cast<long>(v->get());
+    }
     if (metric_names().count(th.metric) == 0) {
       throw InputError(file, line_of(*t->get("metric")), where + ".metric",
                        fmt::format("unknown metric '{}'{}; allowed (SPEC §4): {}", th.metric,
@@ -336,7 +347,7 @@ bool fails_gate(const CheckOutcome& o) {
   // a metric that was not computed, or computed from NaN, fails whatever the
   // threshold expects: a known breach is a value outside the band, not a
   // missing run or invalid data
-  if (o.value.metric.empty() || !o.invalid_data.empty()) return true;
+  if (o.value.metric.empty() || !o.invalid_data.empty() || !o.assumption.empty()) return true;
   // nor is a value that is not a number (a lost episode, a friction figure
   // never reached): it fails a known breach's check too (issue 31)
   if (!std::isfinite(o.value.actual) || !std::isfinite(o.value.desired)) return true;
@@ -345,6 +356,7 @@ bool fails_gate(const CheckOutcome& o) {
 
 const char* outcome_label(const CheckOutcome& o) {
   if (!o.invalid_data.empty()) return "invalid data";
+  if (!o.assumption.empty()) return "assumption broken";
   if (o.threshold.known_breach.empty() || o.value.metric.empty()) return o.passed ? "pass" : "fail";
   if (!std::isfinite(o.value.actual) || !std::isfinite(o.value.desired)) return "fail";
   if (o.passed) return "unexpected pass";
@@ -432,6 +444,23 @@ std::vector<CheckOutcome> check_thresholds(const std::vector<Threshold>& thresho
     }
   }
   return out;
+}
+
+void check_step_assumptions(
+    std::vector<CheckOutcome>& outcomes,
+    const std::function<long(const std::string&, const std::string&)>& steps_of) {
+  for (auto& o : outcomes) {
+    const Threshold& th = o.threshold;
+    if (th.steps_at_most <= 0 || o.value.metric.empty()) continue;
+    const long steps = steps_of(th.case_name, th.engine);
+    if (steps < 0 || steps <= th.steps_at_most) continue;
+    o.assumption = fmt::format(
+        "assumption broken: the band assumes at most {} accepted steps (steps_at_most), the run "
+        "took {}",
+        th.steps_at_most, steps);
+    o.passed = false;
+    o.message = o.assumption + (o.message.empty() ? "" : "; " + o.message);
+  }
 }
 
 std::string junit_xml(const std::vector<CheckOutcome>& outcomes,

@@ -523,6 +523,31 @@ TEST(Gate, ATruthOfAnotherKindIsRefused) {
       << c.output;
 }
 
+// issue 31: the reference's bands assume a bound on its accepted steps
+// (steps_at_most, from ref_steps); a run that took more fails those checks,
+// naming the assumption (here the run's record says 10^6 steps)
+TEST(Gate, ARunBeyondItsBandsStepAssumptionFails) {
+  const auto good = work_dir() / "steps_assumed.h5";
+  ASSERT_EQ(run("run --case falling_ball --engine analytic,reference --quiet --out " +
+                good.string()).exit_code, 0);
+  const auto damaged = work_dir() / "steps_assumed_many.h5";
+  const std::string py = fmt::format("{} {}/tests/python/damage_results.py {} {} steps_many "
+                                     "/runs/falling_ball/reference 2>&1",
+                                     PB_PYTHON, PB_SOURCE_DIR, good.string(), damaged.string());
+  ASSERT_EQ(std::system(py.c_str()), 0);
+  const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
+                     "/cases/thresholds.toml " + damaged.string());
+  EXPECT_EQ(c.exit_code, 1) << c.output;
+  EXPECT_TRUE(contains(c.output, "ASSUMPTION BROKEN falling_ball.reference restitution vs truth"))
+      << c.output;
+  EXPECT_TRUE(contains(c.output, "the band assumes at most 1200 accepted steps (steps_at_most), "
+                                 "the run took 1000000"))
+      << c.output;
+  const auto as_run = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
+                          "/cases/thresholds.toml " + good.string());
+  EXPECT_FALSE(contains(as_run.output, "ASSUMPTION BROKEN")) << as_run.output;
+}
+
 TEST(Gate, ValidFileOfTheInvalidDataTestsPasses) {
   ASSERT_FALSE(falling_ball_mujoco().empty());
   const auto c = run("check --thresholds " + mujoco_position_thresholds().string() + " " +

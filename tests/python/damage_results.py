@@ -30,6 +30,9 @@ broken writer would (issue 24). KIND:
   another truth (check refuses the run, exit 2; issue 31): RUN is the analytic run
     truth_converged   its mapping's physics.mode says "converged reference"
 
+  a broken assumption (check fails the run's bands that assume it, exit 1; issue 31)
+    steps_many        the run's `steps` attribute says 10**6 accepted steps
+
 Every other dataset and attribute is left as it is; a replaced dataset keeps
 its attributes (`unit`, `fields`).
 """
@@ -112,6 +115,8 @@ def main():
             else:
                 rows["peak_force"][0] *= 1000.0
             r["events"][...] = rows
+        elif kind == "steps_many":
+            r.attrs["steps"] = np.int64(10**6)
         elif kind == "truth_converged":
             mapping = json.loads(r.attrs["mapping"])
             mapping["physics"]["mode"] = "converged reference"

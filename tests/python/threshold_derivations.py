@@ -184,7 +184,37 @@ def expected_problems(th, constants):
     return problems
 
 
-def classify(th, constants):
+STEP_CONSTANT = re.compile(r"steps")
+
+
+def step_constants(expr, table, seen=None):
+    """the constants of `table` an expression uses, directly or through others,
+    whose name says they count accepted steps (ref_steps, cc_ref_steps ...)"""
+    out = set()
+    for name in set(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", expr)):
+        if name in table and isinstance(table[name], str):
+            if STEP_CONSTANT.search(name):
+                out.add(name)
+            out |= step_constants(table[name], table)
+    return out
+
+
+def steps_problems(th, constants, table):
+    """a bound that assumes a run's accepted steps (a *steps* constant) states it
+    as steps_at_most, the least such constant, so that `check` can test it on
+    the run (issue 31); no steps_at_most without such a bound"""
+    used = step_constants(str(th.get("bound", "")), table)
+    have = th.get("steps_at_most")
+    if not used:
+        return [] if have is None else ["steps_at_most without a bound that assumes a step count"]
+    want = min(constants[n] for n in used if n in constants)
+    if have != want:
+        return [f"the bound assumes at most {want:g} accepted steps ({', '.join(sorted(used))}): "
+                f"state steps_at_most = {want:g} (got {have!r})"]
+    return []
+
+
+def classify(th, constants, table=None):
     """(category, problems): category one of derived, by_construction, known_breach, other."""
     problems = []
     has_bound = "bound" in th
@@ -210,6 +240,7 @@ def classify(th, constants):
         problems.append("no numeric atol or rtol")
         t = None
     problems += expected_problems(th, constants)
+    problems += steps_problems(th, constants, table or {})
     why = th.get("why", "")
     for pattern, what in FORBIDDEN:
         if pattern.search(why):
@@ -253,7 +284,7 @@ def check(doc):
             offences.append(f"[truths] does not list {case}: state the kind of truth its bands "
                             "against \"truth\" were derived with")
     for th in doc.get("threshold", []):
-        category, problems = classify(th, constants)
+        category, problems = classify(th, constants, doc.get("constants", {}))
         row = counts.setdefault(th.get("engine", "?"), dict.fromkeys(
             ("derived", "by_construction", "known_breach", "other"), 0))
         row[category] += 1
@@ -265,7 +296,7 @@ def check(doc):
 def self_test():
     """The checks catch an underived, a padded and a too-tight entry; a good one passes."""
     head = ('[constants]\nh = "1e-4"\nomega = "sqrt(1e4 / 1.0)"\nomega_h = "omega * h"\n'
-            '# end of constants\n[truths]\nc = "closed form"\n')
+            'ref_steps = "1000"\n# end of constants\n[truths]\nc = "closed form"\n')
 
     def entry(extra):
         return ('[[threshold]]\ncase = "c"\nengine = "e"\nagainst = "truth"\n'
@@ -297,6 +328,9 @@ def self_test():
         "a range without a known breach": (entry(
             'rtol = 0.01\nbound = "omega_h"\nexpected = [0.0, 2.1]\n'
             'expected_bound = ["0", "2 * 1.04"]\nexpected_why = "m"'), 1),
+        "a step count assumed, not stated": (entry('rtol = 0.01\nbound = "ref_steps * 1e-5"'), 1),
+        "a step count assumed and stated": (entry('rtol = 0.01\nbound = "ref_steps * 1e-5"\n'
+                                                  'steps_at_most = 1000'), 0),
         "a pad in the why": (entry('rtol = 0.01\nbound = "omega_h"').replace(
             'why = "w"', 'why = "omega h + 1 %"'), 1),
     }

@@ -141,6 +141,25 @@ TEST(Thresholds, AKnownBreachBeyondItsExpectedRangeFails) {
   EXPECT_TRUE(fails_gate(inside[0]));
 }
 
+// issue 31: a band's assumption on the run's own steps is checked on the run
+TEST(Thresholds, AStepAssumptionBrokenFailsWhateverTheValue) {
+  Threshold t = band("reference", 0.01);
+  t.steps_at_most = 1200;
+  Threshold known = band("box2d", 0.01, "impulsive restitution");
+  known.steps_at_most = 1200;
+  auto out = check_thresholds({t, known}, {value("reference", 0.8, 0.8), value("box2d", 0.7, 0.8)},
+                              {});
+  check_step_assumptions(out, [](const std::string&, const std::string& engine) {
+    return engine == "reference" ? 1201L : 1200L;
+  });
+  EXPECT_STREQ(outcome_label(out[0]), "assumption broken");
+  EXPECT_TRUE(fails_gate(out[0]));
+  EXPECT_NE(out[0].message.find("at most 1200 accepted steps"), std::string::npos) << out[0].message;
+  EXPECT_NE(out[0].message.find("took 1201"), std::string::npos) << out[0].message;
+  EXPECT_STREQ(outcome_label(out[1]), "known breach");  // 1200 steps: the assumption holds
+  EXPECT_FALSE(fails_gate(out[1]));
+}
+
 // issue 31: summary.md lists every known breach, not the first 50
 TEST(Thresholds, TheSummaryListsEveryKnownBreach) {
   std::vector<Threshold> bands;

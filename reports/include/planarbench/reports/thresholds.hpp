@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -37,6 +38,11 @@ struct Threshold {
   double expected_min = 0.0;
   double expected_max = 0.0;
   std::string expected_why;
+  // an assumption of the band on the run's own figures (issue 31): it holds
+  // for a run of at most this many accepted steps (the reference's rk45 error
+  // grows with them); 0: none. `check` fails the threshold, naming the
+  // assumption, when the run took more (check_step_assumptions)
+  long steps_at_most = 0;
   // the tolerance holds by construction (e.g. a joint that is a generalized
   // coordinate), not by a numerical bound; the report labels it so
   bool by_construction = false;
@@ -85,6 +91,9 @@ struct CheckOutcome {
   std::string invalid_data;
   // a known breach whose finite value lies outside its expected range
   bool beyond_range = false;
+  // non-empty: the run breaks an assumption of the band (steps_at_most): it
+  // fails whatever its value
+  std::string assumption;
 };
 
 // whether an outcome fails the gate: a breach that is not a known one, a
@@ -92,7 +101,7 @@ struct CheckOutcome {
 // computed or is not a number, or a run or baseline with invalid data
 [[nodiscard]] bool fails_gate(const CheckOutcome& o);
 // "pass", "fail", "known breach", "beyond its known breach", "unexpected
-// pass" or "invalid data"
+// pass", "assumption broken" or "invalid data"
 [[nodiscard]] const char* outcome_label(const CheckOutcome& o);
 
 // Every threshold against the metrics; a threshold that matches no metric
@@ -103,6 +112,13 @@ struct CheckOutcome {
 [[nodiscard]] std::vector<CheckOutcome> check_thresholds(const std::vector<Threshold>& thresholds,
                                                          const std::vector<MetricValue>& metrics,
                                                          const std::vector<InvalidRun>& invalid);
+
+// The bands' assumptions on a run's own figures: an outcome whose threshold
+// has steps_at_most fails (assumption set, passed false) when `steps_of(case,
+// engine)` is larger; -1 (no such run) leaves it as it is.
+void check_step_assumptions(std::vector<CheckOutcome>& outcomes,
+                            const std::function<long(const std::string&, const std::string&)>&
+                                steps_of);
 
 // JUnit XML: one test case per checked metric, value and limit as properties;
 // one failed test case per diverged run and per dataset of invalid data
