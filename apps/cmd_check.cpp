@@ -51,6 +51,22 @@ void refuse_runs_out_of_scope(const std::string& results, const std::vector<RunO
                                out.size(), runs));
 }
 
+// what bands may assume of a run: its accepted steps, and the largest depth
+// error its collider recorded against the exact depth (MuJoCo's MPR check)
+RunFigures run_figures(const RunResult& r) {
+  RunFigures f;
+  f.steps = r.steps;
+  const auto pairs = r.mapping.find("pairs");
+  if (pairs == r.mapping.end() || !pairs->is_array()) return f;
+  for (const auto& p : *pairs) {
+    const auto check = p.find("mpr_depth_check");
+    if (check == p.end() || !check->is_object()) continue;
+    const auto e = check->find("max_abs_error_m");
+    if (e != check->end() && e->is_number()) f.depth_error_m = std::max(f.depth_error_m, e->get<double>());
+  }
+  return f;
+}
+
 int run_check(const CheckOptions& opt) {
   // everything that can be checked before the (large) results file is read
   const ThresholdsFile file = load_thresholds_file(opt.thresholds);
@@ -100,14 +116,14 @@ int run_check(const CheckOptions& opt) {
     }
   }
   auto outcomes = check_thresholds(thresholds, metrics, invalid);
-  check_step_assumptions(outcomes, [&](const std::string& case_name, const std::string& engine) {
+  check_run_assumptions(outcomes, [&](const std::string& case_name, const std::string& engine) {
     for (const auto& cr : results.cases) {
       if (cr.case_name != case_name) continue;
       for (const auto& r : cr.runs) {
-        if (r.engine_name == engine) return r.steps;
+        if (r.engine_name == engine) return run_figures(r);
       }
     }
-    return -1L;
+    return RunFigures{};
   });
 
   (void)write_text_atomically("--junit", junit, junit_xml(outcomes, diverged, invalid));

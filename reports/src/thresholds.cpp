@@ -222,7 +222,8 @@ ThresholdsFile load_thresholds_file(const std::filesystem::path& path) {
   }
   static const std::vector<std::string> allowed = {
       "case", "engine", "against", "metric", "episode", "atol", "rtol", "why", "known_breach",
-      "by_construction", "bound", "expected", "expected_bound", "expected_why", "steps_at_most"};
+      "by_construction", "bound", "expected", "expected_bound", "expected_why", "steps_at_most",
+      "depth_error_at_most"};
   const std::vector<std::string> metrics(metric_names().begin(), metric_names().end());
   std::vector<Threshold> out;
   for (std::size_t i = 0; i < arr->size(); ++i) {
@@ -290,6 +291,16 @@ ThresholdsFile load_thresholds_file(const std::filesystem::path& path) {
                                      kMaxSteps, describe(*n)));
       }
       th.steps_at_most = static_cast<long>(v->get());
+    }
+    if (const auto* n = t->get("depth_error_at_most")) {
+      const auto v = n->is_number() ? n->value<double>() : std::nullopt;
+      if (!v || !std::isfinite(*v) || *v <= 0.0) {
+        throw InputError(file, line_of(*n), where + ".depth_error_at_most",
+                         fmt::format("must be a finite number > 0 in m: the collider's depth "
+                                     "error the band assumes at most (got {})",
+                                     describe(*n)));
+      }
+      th.depth_error_at_most_m = *v;
     }
     if (metric_names().count(th.metric) == 0) {
       throw InputError(file, line_of(*t->get("metric")), where + ".metric",
@@ -446,18 +457,31 @@ std::vector<CheckOutcome> check_thresholds(const std::vector<Threshold>& thresho
   return out;
 }
 
-void check_step_assumptions(
+void check_run_assumptions(
     std::vector<CheckOutcome>& outcomes,
-    const std::function<long(const std::string&, const std::string&)>& steps_of) {
+    const std::function<RunFigures(const std::string&, const std::string&)>& figures_of) {
   for (auto& o : outcomes) {
     const Threshold& th = o.threshold;
-    if (th.steps_at_most <= 0 || o.value.metric.empty()) continue;
-    const long steps = steps_of(th.case_name, th.engine);
-    if (steps < 0 || steps <= th.steps_at_most) continue;
-    o.assumption = fmt::format(
-        "assumption broken: the band assumes at most {} accepted steps (steps_at_most), the run "
-        "took {}",
-        th.steps_at_most, steps);
+    if ((th.steps_at_most <= 0 && th.depth_error_at_most_m <= 0.0) || o.value.metric.empty()) {
+      continue;
+    }
+    const RunFigures f = figures_of(th.case_name, th.engine);
+    if (f.steps < 0) continue;
+    std::string broken;
+    if (th.steps_at_most > 0 && f.steps > th.steps_at_most) {
+      broken = fmt::format("the band assumes at most {} accepted steps (steps_at_most), the run "
+                           "took {}",
+                           th.steps_at_most, f.steps);
+    } else if (th.depth_error_at_most_m > 0.0 && !(f.depth_error_m >= 0.0)) {
+      broken = "the band assumes the collider's depth error recorded and at most " +
+               fmt::format("{:g} m (depth_error_at_most); the run records none", th.depth_error_at_most_m);
+    } else if (th.depth_error_at_most_m > 0.0 && f.depth_error_m > th.depth_error_at_most_m) {
+      broken = fmt::format("the band assumes the collider's depth error at most {:g} m "
+                           "(depth_error_at_most), the run's is {:.3g} m",
+                           th.depth_error_at_most_m, f.depth_error_m);
+    }
+    if (broken.empty()) continue;
+    o.assumption = "assumption broken: " + broken;
     o.passed = false;
     o.message = o.assumption + (o.message.empty() ? "" : "; " + o.message);
   }

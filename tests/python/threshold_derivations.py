@@ -214,6 +214,31 @@ def steps_problems(th, constants, table):
     return []
 
 
+def depth_error_problems(th, constants, table):
+    """a bound that assumes a collider's recorded depth error (a *_mpr_err
+    constant) states it as depth_error_at_most, so that `check` tests the run's
+    record (issue 31)"""
+    used = {n for n in constants_used(str(th.get("bound", "")), table) if n.endswith("_mpr_err")}
+    have = th.get("depth_error_at_most")
+    if not used:
+        return [] if have is None else ["depth_error_at_most without a bound that assumes one"]
+    want = min(constants[n] for n in used if n in constants)
+    if have != want:
+        return [f"the bound assumes a depth error of at most {want:g} m ({', '.join(sorted(used))}):"
+                f" state depth_error_at_most = {want:g} (got {have!r})"]
+    return []
+
+
+def constants_used(expr, table):
+    """every constant of `table` an expression uses, directly or through others"""
+    out = set()
+    for name in set(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", expr)):
+        if name in table and isinstance(table[name], str) and name not in out:
+            out.add(name)
+            out |= constants_used(table[name], table)
+    return out
+
+
 def classify(th, constants, table=None):
     """(category, problems): category one of derived, by_construction, known_breach, other."""
     problems = []
@@ -241,6 +266,7 @@ def classify(th, constants, table=None):
         t = None
     problems += expected_problems(th, constants)
     problems += steps_problems(th, constants, table or {})
+    problems += depth_error_problems(th, constants, table or {})
     why = th.get("why", "")
     for pattern, what in FORBIDDEN:
         if pattern.search(why):

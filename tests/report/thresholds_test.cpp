@@ -149,8 +149,8 @@ TEST(Thresholds, AStepAssumptionBrokenFailsWhateverTheValue) {
   known.steps_at_most = 1200;
   auto out = check_thresholds({t, known}, {value("reference", 0.8, 0.8), value("box2d", 0.7, 0.8)},
                               {});
-  check_step_assumptions(out, [](const std::string&, const std::string& engine) {
-    return engine == "reference" ? 1201L : 1200L;
+  check_run_assumptions(out, [](const std::string&, const std::string& engine) {
+    return RunFigures{engine == "reference" ? 1201L : 1200L, -1.0};
   });
   EXPECT_STREQ(outcome_label(out[0]), "assumption broken");
   EXPECT_TRUE(fails_gate(out[0]));
@@ -158,6 +158,24 @@ TEST(Thresholds, AStepAssumptionBrokenFailsWhateverTheValue) {
   EXPECT_NE(out[0].message.find("took 1201"), std::string::npos) << out[0].message;
   EXPECT_STREQ(outcome_label(out[1]), "known breach");  // 1200 steps: the assumption holds
   EXPECT_FALSE(fails_gate(out[1]));
+}
+
+// issue 31: a band's assumption on the collider's depth error, checked on the
+// figure the run records (MuJoCo's MPR against the exact depth)
+TEST(Thresholds, ADepthErrorAssumptionIsCheckedOnTheRunsRecord) {
+  Threshold t = band("mujoco", 0.01);
+  t.depth_error_at_most_m = 1e-6;
+  for (const auto& [recorded, broken] : {std::pair{3.9e-7, false}, std::pair{1e-6, false},
+                                         std::pair{1.2e-6, true}, std::pair{-1.0, true}}) {
+    auto out = check_thresholds({t}, {value("mujoco", 0.8, 0.8)}, {});
+    check_run_assumptions(out, [r = recorded](const std::string&, const std::string&) {
+      return RunFigures{100, r};
+    });
+    EXPECT_EQ(fails_gate(out[0]), broken) << recorded;
+    if (broken) {
+      EXPECT_STREQ(outcome_label(out[0]), "assumption broken");
+    }
+  }
 }
 
 // issue 31: summary.md lists every known breach, not the first 50

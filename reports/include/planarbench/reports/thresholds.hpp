@@ -43,6 +43,10 @@ struct Threshold {
   // grows with them); 0: none. `check` fails the threshold, naming the
   // assumption, when the run took more (check_step_assumptions)
   long steps_at_most = 0;
+  // the same for the depth error of an engine's collider the band assumes
+  // (MuJoCo's MPR on circle-ellipse, which the run records against the exact
+  // depth: mapping pairs[].mpr_depth_check.max_abs_error_m); 0: none
+  double depth_error_at_most_m = 0.0;
   // the tolerance holds by construction (e.g. a joint that is a generalized
   // coordinate), not by a numerical bound; the report labels it so
   bool by_construction = false;
@@ -113,12 +117,18 @@ struct CheckOutcome {
                                                          const std::vector<MetricValue>& metrics,
                                                          const std::vector<InvalidRun>& invalid);
 
+// A run's own figures that bands may assume a bound on.
+struct RunFigures {
+  long steps = -1;                    // accepted steps; -1: no such run
+  double depth_error_m = -1.0;        // the collider's recorded depth error; < 0: not recorded
+};
 // The bands' assumptions on a run's own figures: an outcome whose threshold
-// has steps_at_most fails (assumption set, passed false) when `steps_of(case,
-// engine)` is larger; -1 (no such run) leaves it as it is.
-void check_step_assumptions(std::vector<CheckOutcome>& outcomes,
-                            const std::function<long(const std::string&, const std::string&)>&
-                                steps_of);
+// has steps_at_most (depth_error_at_most_m) fails (assumption set, passed
+// false) when the run's figure is larger, or, for the depth error, not
+// recorded; no such run leaves it as it is.
+void check_run_assumptions(
+    std::vector<CheckOutcome>& outcomes,
+    const std::function<RunFigures(const std::string&, const std::string&)>& figures_of);
 
 // JUnit XML: one test case per checked metric, value and limit as properties;
 // one failed test case per diverged run and per dataset of invalid data
