@@ -8,13 +8,22 @@ Evaluates the [constants] (in order; each may use those above it) and every
 `bound` with a small evaluator over Python's AST (numbers, + - * / **, unary
 minus, parentheses, a fixed set of functions, pi and the constants: nothing
 else is run), then checks each [[threshold]]:
-  - exactly one of: bound (derived), by_construction = true, known_breach
-    (a known breach may also carry a bound: the band it is judged against);
+  - a bound (derived), by_construction = true with its bound (what holds by
+    construction still rounds), or known_breach (which may carry the bound
+    of the band it is judged against);
   - atol or rtol, never both; t = rtol if set, else atol;
   - with a bound b: b finite and >= 0; t >= b (no band tighter than its
     bound); t <= max(1.1 b, b rounded up to 2 significant digits) (no pad);
     b = 0 requires t = 0;
-  - a why without the phrases the format forbids (a pad, interpolation).
+  - a why without the phrases the format forbids (a pad, interpolation, a
+    band quoted from an issue);
+  - a known breach states its expected range (expected, expected_bound,
+    expected_why), each end no tighter than its expression and not padded;
+  - a bound that assumes a run's accepted steps or a collider's depth error
+    states it (steps_at_most, depth_error_at_most) for `check` to test;
+  - every case with a band against "truth" is listed in [truths];
+  - every constant has a source comment, and one that is a measurement names
+    the test that recomputes it (or the record `check` tests).
 Prints the table total / derived / by construction / known breach / other per
 engine and for the file; exits 1 when other > 0 (naming each offending
 threshold and why) or a constant does not evaluate. A self-test runs first so
@@ -45,6 +54,8 @@ MAX_EXPONENT = 16.0
 REL_ROUNDING = 1e-12
 # phrases the format forbids in a why (cases/thresholds.toml's header)
 FORBIDDEN = [
+    (re.compile(r"\bissues?[- ]?\d+", re.I),
+     "a band quoted from an issue (derive it; an issue is not a source)"),
     (re.compile(r"\+\s*1\s*%"), "a pad ('+ 1 %')"),
     (re.compile(r"\bpad(ded)?\b", re.I), "a pad"),
     (re.compile(r"between the last", re.I), "interpolation between other cases"),
@@ -105,6 +116,44 @@ def evaluate(text, names):
     if isinstance(v, complex):
         raise BoundError("the value is complex")
     return v
+
+
+# a constant's source that is a measurement, not a derivation (issue 31): it
+# passes only where the comment names the test that recomputes it from the
+# code that produces it ("tests/...") or the run record `check` tests
+MEASURED = re.compile(r"\bmeasured\b|\bobserved\b|rounded up|worst of|as seen", re.I)
+RECOMPUTED = re.compile(r"tests/|check tests it")
+
+
+def constant_sources(text):
+    """(offences) of the [constants] section of a thresholds file's text: every
+    constant has a source (a comment on its line, or the comment lines above
+    its group, which a blank line ends); a measured figure names the test that
+    recomputes it or the record check tests"""
+    start = text.find("[constants]\n")
+    end = text.find("# end of constants", start)
+    if start < 0 or end < 0:
+        return []
+    offences, pending = [], []
+    for line in text[start + len("[constants]\n"):end].split("\n"):
+        stripped = line.strip()
+        if not stripped:
+            pending = []
+            continue
+        if stripped.startswith("#"):
+            pending.append(stripped)
+            continue
+        m = re.match(r'([A-Za-z_][A-Za-z0-9_]*)\s*=\s*"[^"]*"\s*(#.*)?$', stripped)
+        if not m:
+            continue
+        comment = " ".join(pending + ([m.group(2)] if m.group(2) else []))
+        if not comment:
+            offences.append(f"constants.{m.group(1)}: no source (a comment on its line or above "
+                            "its group)")
+        elif MEASURED.search(comment) and not RECOMPUTED.search(comment):
+            offences.append(f"constants.{m.group(1)}: a measured figure; derive it, or name the "
+                            "test that recomputes it (tests/...) or the record check tests")
+    return offences
 
 
 def evaluate_constants(table):
@@ -249,6 +298,12 @@ def classify(th, constants, table=None):
                               ("known_breach", known)) if on]
     if known and labels == ["bound", "known_breach"]:
         category = "known_breach"
+    elif labels == ["bound", "by_construction"]:
+        category = "by_construction"
+    elif labels == ["by_construction"]:
+        category = "other"
+        problems.append("by_construction without a bound: state the rounding (or other) bound "
+                        "that what holds by construction still has")
     elif len(labels) == 1:
         category = {"bound": "derived", "by_construction": "by_construction",
                     "known_breach": "known_breach"}[labels[0]]
@@ -338,8 +393,9 @@ def self_test():
         "zero bound, nonzero band": (entry('atol = 1e-9\nbound = "0"'), 1),
         "code in a bound": (entry('rtol = 0.01\nbound = "__import__(\'os\').getpid()"'), 1),
         "unknown name": (entry('rtol = 0.01\nbound = "omega_k"'), 1),
-        "bound and by construction": (entry('rtol = 0.01\nbound = "omega_h"\n'
-                                            "by_construction = true"), 1),
+        "by construction with its bound": (entry('rtol = 0.01\nbound = "omega_h"\n'
+                                                 "by_construction = true"), 0),
+        "by construction without a bound": (entry("rtol = 0.01\nby_construction = true"), 1),
         "known breach with its band and range": (entry(
             'rtol = 0.01\nbound = "omega_h"\nknown_breach = "k"\nexpected = [0.0, 2.1]\n'
             'expected_bound = ["0", "2 * 1.04"]\nexpected_why = "m"'), 0),
@@ -357,6 +413,8 @@ def self_test():
         "a step count assumed, not stated": (entry('rtol = 0.01\nbound = "ref_steps * 1e-5"'), 1),
         "a step count assumed and stated": (entry('rtol = 0.01\nbound = "ref_steps * 1e-5"\n'
                                                   'steps_at_most = 1000'), 0),
+        "an issue's band in the why": (entry('rtol = 0.01\nbound = "omega_h"').replace(
+            'why = "w"', 'why = "the issue-16 generality band for peak force"'), 1),
         "a pad in the why": (entry('rtol = 0.01\nbound = "omega_h"').replace(
             'why = "w"', 'why = "omega h + 1 %"'), 1),
     }
@@ -370,6 +428,20 @@ def self_test():
                                          + cases["good"][0]))
     if len(offences) != 1 or "[truths]" not in offences[0]:
         failures.append(f"self-test: a case missing from [truths] was not named: {offences}")
+    sources = {
+        "a measured-error constant": ('[constants]\nerr = "0.00289 * 1.5"  # the measured error x 1.5\n'
+                                      "# end of constants\n", 1),
+        "a constant without a source": ('[constants]\nerr = "0.00289"\n# end of constants\n', 1),
+        "a measured figure a test recomputes": (
+            '[constants]\nerr = "1e-6"  # measured worst 5.3e-7, asserted by tests/x_test.cpp\n'
+            "# end of constants\n", 0),
+        "a derived constant": ('[constants]\n# the ball (case file)\nm = "1"\nw = "sqrt(m)"\n'
+                               "# end of constants\n", 0),
+    }
+    for label, (text, want) in sources.items():
+        got = constant_sources(text)
+        if len(got) != want:
+            failures.append(f"self-test '{label}': {len(got)} offence(s) {got}, expected {want}")
     _, _, errors = check(tomllib.loads('[constants]\na = "b + 1"\nb = "1"\n'))
     if not errors:
         failures.append("self-test: a constant using one defined below it was accepted")
@@ -389,11 +461,13 @@ def main(argv):
         return 1
     try:
         with open(argv[1], "rb") as f:
-            doc = tomllib.load(f)
-    except (OSError, tomllib.TOMLDecodeError) as e:
+            raw = f.read()
+        doc = tomllib.loads(raw.decode("utf-8"))
+    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as e:
         print(f"{argv[1]}: {e}")
         return 1
     counts, offences, errors = check(doc)
+    offences += constant_sources(raw.decode("utf-8"))
     cols = ("derived", "by_construction", "known_breach", "other")
     print(f"{'engine':<12} {'total':>6} {'derived':>8} {'by constr.':>10} {'known br.':>9} "
           f"{'other':>6}")
