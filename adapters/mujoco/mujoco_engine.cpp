@@ -468,10 +468,12 @@ void MujocoEngine::ensure_current() {
   mjModel* m = model_.get();
   mjData* d = data_.get();
   if (!forward_current_) {
+    const ConstraintHook stiff =
+        settings_.friction_damping == "stiff" ? &stiffen_friction_rows : nullptr;
     if (rule_) {
-      forward_checked(m, d, &SolrefRule::hook, rule_.get());
+      forward_checked(m, d, &SolrefRule::hook, rule_.get(), stiff);
     } else {
-      forward_checked(m, d);
+      forward_checked(m, d, nullptr, nullptr, stiff);
     }
     check_warnings();
     forward_current_ = true;

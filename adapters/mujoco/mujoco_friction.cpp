@@ -1,6 +1,8 @@
 #include "mujoco_friction.hpp"
 
 #include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
 
 namespace pb::internal::mujoco {
 
@@ -28,17 +30,48 @@ nlohmann::json friction_mapping(double mu, const MujocoSettings& s) {
         "(mju_QCQP2) and every update is reverted",
         s.noslip_iterations));
   }
+  if (s.friction_damping == "shared") {
+    lost.push_back(
+        "the friction rows share the pair's solref (MuJoCo 2.2.2 has no friction solref): "
+        "inside the cone a slip decays as a_t = -b v_t at the law's b = c / m, so a short "
+        "contact stops only part of it (mujoco.friction_damping = stiff, with the elliptic "
+        "cone, is the opt-in remedy)");
+  }
+  const std::string rows =
+      s.friction_damping == "stiff"
+          ? std::string("the friction rows' damping B rewritten after mj_makeConstraint to "
+                        "2 omega, omega = sqrt(K) of the contact's normal row "
+                        "(mujoco.friction_damping = stiff): a slip inside the cone decays at "
+                        "twice the normal oscillator's rate, stopping within the contact, while "
+                        "the cone's coupling leaves the normal law as it was")
+          : std::string("the friction rows sharing the pair's solref and solimp");
   return {{"coefficient", mu},
           {"expressed_as",
            fmt::format("exactly as the coefficient: the pair's <pair condim=\"3\" friction=\"{0} "
-                       "{0} ...\"> (both tangents, no mixing for explicit pairs), the "
-                       "friction rows sharing the pair's solref and solimp",
-                       mu)},
+                       "{0} ...\"> (both tangents, no mixing for explicit pairs), {1}",
+                       mu, rows)},
           {"model",
            fmt::format("MuJoCo's soft frictional contact, cone = {}, impratio = {}, "
                        "noslip_iterations = {}",
                        s.cone, s.impratio, s.noslip_iterations)},
           {"not_expressed", lost}};
+}
+
+void stiffen_friction_rows(const mjModel* /*m*/, mjData* d) {
+  for (int i = 0; i < d->ncon; ++i) {
+    const mjContact& c = d->contact[i];
+    if (c.exclude != 0 || c.efc_address < 0 || c.dim < 3) continue;
+    // the elliptic cone's friction rows have no spring (K = 0): their B alone
+    // sets how fast a slip inside the cone decays (mj_referenceConstraint:
+    // aref = -B v)
+    // the normal row's K (1/s^2) is its oscillator's omega^2: the friction
+    // rows critically damped at that frequency, B = 2 omega
+    const mjtNum b = 2.0 * std::sqrt(std::max<mjtNum>(0.0, d->efc_KBIP[4 * c.efc_address]));
+    for (int r = 1; r < c.dim; ++r) {
+      const int row = c.efc_address + r;
+      if (d->efc_type[row] == mjCNSTR_CONTACT_ELLIPTIC) d->efc_KBIP[4 * row + 1] = b;
+    }
+  }
 }
 
 }  // namespace pb::internal::mujoco

@@ -21,7 +21,18 @@
 //     rows without their regulariser; in the plane it is a no-op with the
 //     elliptic cone (the y tangent's zero row makes its 2x2 QCQP singular)
 //     and, with the pyramidal cone, only removes creep while |F_t| <= mu F_n / 2.
+//   - the friction rows share the pair's solref (2.2.2 has no solreffriction):
+//     inside the cone a slip decays as a_t = -b v_t at the law's b = c / m;
+//     friction_damping = stiff (opt-in, elliptic cone) rewrites those rows' B
+//     in efc_KBIP after mj_makeConstraint to 2 omega, omega = sqrt(K) of the
+//     contact's normal row: the slip decays at twice the normal oscillator's
+//     rate, so it stops within the contact (disk_oblique_roll: e^(-2 pi)),
+//     while a larger B (measured: 1e4/s, MuJoCo's stiffest) drags the normal
+//     force through the elliptic cone's coupling (peak 2988 N for 852 N)
+//     (stiffen_friction_rows).
 #pragma once
+
+#include <mujoco/mujoco.h>
 
 #include <nlohmann/json.hpp>
 
@@ -31,5 +42,10 @@ namespace pb::internal::mujoco {
 
 // the mapping's description of a pair's friction with coefficient mu under s
 [[nodiscard]] nlohmann::json friction_mapping(double mu, const MujocoSettings& s);
+
+// friction_damping = stiff: every elliptic friction row of the contacts made
+// (rows efc_address + 1 .. + dim - 1) gets B = 2 sqrt(K) of the contact's
+// normal row (efc_address); a ConstraintHook (mujoco_stepping.hpp)
+void stiffen_friction_rows(const mjModel* m, mjData* d);
 
 }  // namespace pb::internal::mujoco

@@ -28,6 +28,11 @@ SettingsBinder bind_mujoco_settings(MujocoSettings& s) {
       .integer("noslip_iterations", &s.noslip_iterations, 0, 100000,
                "noslip solver iterations after the main solve (mjOption::noslip_iterations; "
                "default 0: off, MuJoCo's default)")
+      .choice("friction_damping", &s.friction_damping, {"shared", "stiff"},
+              "damping of the friction rows: shared = the pair's solref, MuJoCo 2.2.2's only "
+              "option (default); stiff = opt-in, elliptic cone only: each friction row's B "
+              "rewritten after mj_makeConstraint to 2 sqrt(K) of the contact's normal row, so "
+              "a slip inside the cone stops within the contact")
       .reals("solimp", &s.solimp, 5,
              "contact impedance (dmin, dmax, width m, midpoint, power); d in [0.0001, 0.9999] "
              "(default [0.9999, 0.9999, 0.001, 0.5, 2]: near the clamp, the spring-damper is "
@@ -44,6 +49,13 @@ SettingsBinder bind_mujoco_settings(MujocoSettings& s) {
 }
 
 void validate_mujoco_settings(const MujocoSettings& s, const SettingsOverrides& given) {
+  if (s.friction_damping == "stiff" && s.cone != "elliptic") {
+    const SettingValue* f = given.find("mujoco.friction_damping");
+    throw InputError(f ? f->source.origin : "defaults", f ? f->source.line : 0,
+                     "mujoco.friction_damping",
+                     "stiff rewrites the elliptic cone's friction rows; set mujoco.cone=elliptic "
+                     "as well (the pyramidal cone's rows each carry normal and friction at once)");
+  }
   const auto& p = s.solimp;
   // the prefixed key wins over the shared one (settings.hpp)
   const SettingValue* v = given.find("mujoco.solimp");

@@ -27,6 +27,14 @@ struct MujocoSettings {
   std::string cone = "pyramidal";
   double impratio = 1.0;
   int noslip_iterations = 0;
+  // the friction rows' damping (issue 31): "shared" (default, MuJoCo 2.2.2 as
+  // its users run it: the friction rows take the pair's solref, so a slip
+  // decays at the law's b = c / m) or "stiff" (opt-in, elliptic cone only:
+  // after mj_makeConstraint each friction row's B in efc_KBIP is rewritten to
+  // 2 sqrt(K) of the contact's normal row, so that a slip inside the cone
+  // stops within the contact, as a rigid Coulomb stick; MuJoCo 3's
+  // solreffriction is the setting that does this there; mujoco_friction.hpp)
+  std::string friction_damping = "shared";
   // solimp (dmin, dmax, width m, midpoint, power): impedance d near its clamp
   // 0.9999 makes the constraint follow the reference acceleration -b v - k r,
   // i.e. the spring-damper (ENGINES.md)

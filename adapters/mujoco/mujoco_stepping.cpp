@@ -61,10 +61,11 @@ const std::string& last_warning_text() {
   return t_last_warning;
 }
 
-void forward_checked(const mjModel* m, mjData* d, CollisionHook hook, void* context) {
+void forward_checked(const mjModel* m, mjData* d, CollisionHook hook, void* context,
+                     ConstraintHook constraint_hook) {
   mj_checkPos(m, d);
   mj_checkVel(m, d);
-  if (hook == nullptr) {
+  if (hook == nullptr && constraint_hook == nullptr) {
     mj_forward(m, d);
   } else {
     mj_kinematics(m, d);
@@ -74,8 +75,9 @@ void forward_checked(const mjModel* m, mjData* d, CollisionHook hook, void* cont
     mj_crb(m, d);
     mj_factorM(m, d);
     mj_collision(m, d);
-    hook(context, m, d);
+    if (hook != nullptr) hook(context, m, d);
     mj_makeConstraint(m, d);
+    if (constraint_hook != nullptr) constraint_hook(m, d);
     mj_transmission(m, d);
     mj_projectConstraint(m, d);
     mj_fwdVelocity(m, d);

@@ -20,14 +20,20 @@ namespace pb::internal::mujoco {
 // solref is read into the constraint rows): native mode's SolrefRule.
 using CollisionHook = void (*)(void* context, const mjModel* m, mjData* d);
 
+// A function run between mj_makeConstraint (the rows and their efc_KBIP are
+// made) and mj_fwdVelocity (mj_referenceConstraint reads efc_KBIP into
+// efc_aref): the opt-in stiff friction rows (mujoco_friction.hpp).
+using ConstraintHook = void (*)(const mjModel* m, mjData* d);
+
 // first half: checks and mj_forward at the current state. With a hook,
 // mj_forward's stages are called one by one (engine_forward.c 2.2.2:
 // mj_fwdPosition = kinematics, comPos, camlight, tendon, crb, factorM,
 // collision, makeConstraint, transmission, projectConstraint; then
 // fwdVelocity, fwdActuation, fwdAcceleration, fwdConstraint; the model has no
-// sensors, energy or control callback) with the hook after mj_collision.
+// sensors, energy or control callback) with the hook after mj_collision and
+// constraint_hook after mj_makeConstraint.
 void forward_checked(const mjModel* m, mjData* d, CollisionHook hook = nullptr,
-                     void* context = nullptr);
+                     void* context = nullptr, ConstraintHook constraint_hook = nullptr);
 // second half: the integrator of m->opt (RK4 reuses the qacc of forward_checked)
 void integrate(const mjModel* m, mjData* d);
 // every integrate() of this thread, whoever calls it (a run, the oracle's
