@@ -60,6 +60,35 @@ TEST(PairGeometry, FrictionOnAHalfPlaneActsAtTheBodysOwnPoints) {
   }
 }
 
+// concave_corner's L (issue 31) turned 20 deg with its outer corner 20 mm into
+// a half-plane of 180 outline points: one vertex inside, and the line's
+// samples inside the lopsided wedge around it. The pair acts at the vertex,
+// as geometry=exact does, in both detection modes; the paper's rule alone
+// (the body with more points inside) takes the samples' centroid, 19 mm
+// beside the corner here (measured with the rule removed: x = 0.0325 m).
+TEST(PairGeometry, OneVertexInsideASampledBodyActsAtTheVertex) {
+  const Polygon ell{{Vec2(-0.11, -0.11), Vec2(0.19, -0.11), Vec2(0.19, -0.01), Vec2(-0.01, -0.01),
+                     Vec2(-0.01, 0.19), Vec2(-0.11, 0.19)}};
+  Body line = body(HalfPlane{4.0});
+  Body l_body = body(ell, 6);
+  const double a = 20.0 * std::acos(-1.0) / 180.0;
+  const Vec2 corner(-0.11 * std::cos(a) + 0.11 * std::sin(a), -0.11 * std::sin(a) - 0.11 * std::cos(a));
+  const Pose pose{Vec2(0.013 - corner.x(), -0.02 - corner.y()), a};  // the corner at (0.013, -0.02)
+  PairGeometry exact(line, l_body, GeometryMode::exact);
+  const ContactGeometry want = exact.evaluate(Pose{}, pose);
+  // the exact routine's line of action through the corner (a placement by a
+  // rotation and a sum: 1e-16 m)
+  ASSERT_NEAR(want.point_b_m.x(), 0.013, 1e-15);
+  for (const DetectionMode d : {DetectionMode::fast, DetectionMode::brute}) {
+    PairGeometry g(line, l_body, GeometryMode::outline, d, false);
+    const ContactGeometry got = g.evaluate(Pose{}, pose);
+    // the same vertex placed by the outline's own rotation: 1e-15 m
+    EXPECT_NEAR(got.gap_m, want.gap_m, 1e-15);
+    EXPECT_NEAR(got.point_b_m.x(), 0.013, 1e-15);
+    EXPECT_NEAR(got.point_b_m.y(), -0.02, 1e-15);
+  }
+}
+
 TEST(PairGeometry, SupportDependsOnTheMode) {
   std::string why;
   EXPECT_TRUE(PairGeometry::supported(body(Ellipse{1, 0.5}), body(Ellipse{1, 0.5}),
