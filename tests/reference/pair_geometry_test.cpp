@@ -89,6 +89,32 @@ TEST(PairGeometry, OneVertexInsideASampledBodyActsAtTheVertex) {
   }
 }
 
+// head_on's two 180-point disks (R = 0.2 m) pressed vertex against vertex,
+// 2 mm deep: each deepest vertex lies on the bisector of the other's wedge,
+// as deep below both faces. The contact pushes along the centre line, not
+// along whichever face the rounding made nearer (issue 35: the normal flipped
+// by 2 deg between steps and, with friction, so did the slip direction, 4e6
+// steps for 0.5 s); both detection modes, with and without friction
+TEST(PairGeometry, VertexOnAWedgesBisectorIsPushedAlongIt) {
+  Body a = body(Circle{0.2});
+  Body b = body(Circle{0.2});
+  for (const double y : {0.0, 1e-17, -3e-17}) {  // on the axis and off it by rounding
+    const Pose pa{Vec2(-0.199, y), 0.0};
+    const Pose pb{Vec2(0.199, 0.0), 0.0};
+    for (const DetectionMode d : {DetectionMode::fast, DetectionMode::brute}) {
+      for (const bool friction : {false, true}) {
+        PairGeometry g(a, b, GeometryMode::outline, d, friction);
+        const ContactGeometry c = g.evaluate(pa, pb);
+        ASSERT_LT(c.gap_m, 0.0);
+        // the bisector of two faces 2 deg apart, from normals each rounded
+        // to 1e-16: along x to 1e-15 (a face's normal would be 0.01745 off)
+        EXPECT_NEAR(c.normal.y(), 0.0, 1e-15) << y << " " << friction;
+        EXPECT_NEAR(c.normal.x(), 1.0, 1e-15);
+      }
+    }
+  }
+}
+
 TEST(PairGeometry, SupportDependsOnTheMode) {
   std::string why;
   EXPECT_TRUE(PairGeometry::supported(body(Ellipse{1, 0.5}), body(Ellipse{1, 0.5}),

@@ -88,6 +88,28 @@ TEST(ReferenceEngine, RunsThroughTheRunner) {
   EXPECT_GT(r.steps, 0);
 }
 
+// issue 35: head_on's disks with Coulomb friction (mu 0.3) meet head on, so
+// friction has nothing to do: the run takes the frictionless run's steps, not
+// 4e6 (the slip direction flipped with the outline's normal at every step,
+// each flip located as an event); its tangential impulse is rounding
+TEST(ReferenceEngine, HeadOnWithFrictionTakesTheFrictionlessSteps) {
+  Case c = load_case(PB_CASES_DIR "/head_on.toml");
+  auto e = make_reference_engine();
+  const RunResult plain = run_engine(*e, c, {});
+  ASSERT_EQ(plain.status, RunStatus::ok) << plain.reason;
+  c.contacts[0].friction = 0.3;
+  auto f = make_reference_engine();
+  const RunResult rough = run_engine(*f, c, {});
+  ASSERT_EQ(rough.status, RunStatus::ok) << rough.reason;
+  // 2x: the friction pair's extra events (press, stick) and their steps
+  EXPECT_LE(rough.steps, 2 * plain.steps) << rough.steps << " vs " << plain.steps;
+  // the disks keep moving along the x axis: no spin from a tangential impulse
+  // (1e-12 rad/s: rounding of the contact's lever on the 3 N s impulse)
+  for (const auto& b : rough.bodies) {
+    EXPECT_NEAR(b.angular_velocity_radps.back(), 0.0, 1e-12) << b.name;
+  }
+}
+
 TEST(ReferenceEngine, BodyStatesIncludeFixedBodies) {
   auto e = make_reference_engine();
   const Case c = load("sliding");

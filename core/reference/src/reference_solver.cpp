@@ -27,6 +27,12 @@ constexpr long kMaxSteps = 200'000'000;
 // 1e5 steps on a 2.5 s case to be stopped.
 constexpr long kProgressWindow = 100'000;
 constexpr double kHopeless = 100.0 * static_cast<double>(kMaxSteps);
+// ... and steps per simulated second are bounded (issue 35): a window that
+// averaged more than this many (h below 1e-8 s over 1e5 steps) is chattering
+// between events or integrating a contact too stiff to resolve. The stiffest shipped contact (dual_pendulum's
+// Hertz pair, 0.24 ms long) takes ~1e2 steps, 4e5 per simulated second; the
+// bound is 250 times that.
+constexpr double kMaxStepsPerSimSecond = 1e8;
 // ... and a run whose accepted steps leave t unchanged (h below half an ulp of
 // t: a speed of 1e200 m/s at t = 0 gives steps of ~1e-300 s, each costing up
 // to one event location, ~7 ms) ends after this many in a row, at once: no
@@ -386,6 +392,15 @@ void ReferenceSolver::accept(double h, std::optional<double> exact_end) {
     const double advanced = t_ - window_t_;
     const double left = std::max(duration_s_ - t_, 0.0);
     const double needed = left / advanced * static_cast<double>(kProgressWindow);
+    if (advanced > 0.0 && static_cast<double>(kProgressWindow) / advanced > kMaxStepsPerSimSecond) {
+      throw EngineError(fmt::format(
+          "reference: too many steps per simulated second: the last {} advanced t by {:.3g} s "
+          "(to t = {:.6g} s), {:.3g} per simulated second, beyond the bound {:.0e} (the "
+          "stiffest shipped contact takes 4e5): events chattering, or a contact too stiff to "
+          "resolve",
+          kProgressWindow, advanced, t_, static_cast<double>(kProgressWindow) / advanced,
+          kMaxStepsPerSimSecond));
+    }
     if (!(advanced > 0.0) || needed > kHopeless) {
       throw EngineError(fmt::format(
           "reference: no progress: the last {} steps advanced t by {:.3g} s (to t = {:.6g} s); "
