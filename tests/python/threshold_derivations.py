@@ -67,12 +67,23 @@ class BoundError(Exception):
     pass
 
 
+# a bound is a line of arithmetic; far longer is not one (and Python's parser
+# and this evaluator recurse: 1e5 unary minus signs exhaust the stack)
+MAX_EXPRESSION_CHARS = 2000
+
+
 def evaluate(text, names):
     """The value of expression `text` over `names` (a dict); BoundError if not allowed."""
+    text = text.strip()
+    if len(text) > MAX_EXPRESSION_CHARS:
+        raise BoundError(f"{len(text)} characters; an expression has at most "
+                         f"{MAX_EXPRESSION_CHARS}")
     try:
-        tree = ast.parse(text.strip(), mode="eval")
+        tree = ast.parse(text, mode="eval")
     except SyntaxError as e:
         raise BoundError(f"not an expression: {e.msg}") from None
+    except (RecursionError, MemoryError):
+        raise BoundError("nested too deeply to evaluate") from None
 
     def ev(node):
         if isinstance(node, ast.Expression):
@@ -80,7 +91,11 @@ def evaluate(text, names):
         if isinstance(node, ast.Constant):
             if isinstance(node.value, bool) or not isinstance(node.value, (int, float)):
                 raise BoundError(f"only numbers are allowed, not {node.value!r}")
-            return float(node.value)
+            try:
+                return float(node.value)
+            except OverflowError:
+                raise BoundError(f"the number {str(node.value)[:20]}... does not fit a "
+                                 "double") from None
         if isinstance(node, ast.Name):
             if node.id == "pi":
                 return math.pi
@@ -95,9 +110,13 @@ def evaluate(text, names):
             if isinstance(node.op, ast.Pow) and abs(b) > MAX_EXPONENT:
                 raise BoundError(f"exponent {b:g} is larger than {MAX_EXPONENT:g}")
             try:
-                return float(BINARY[type(node.op)](a, b))
+                v = BINARY[type(node.op)](a, b)
             except (ZeroDivisionError, OverflowError) as e:
                 raise BoundError(str(e)) from None
+            if isinstance(v, complex):
+                raise BoundError(f"'{ast.unparse(node)}' is complex (a negative base to a "
+                                 "fractional power)")
+            return float(v)
         if isinstance(node, ast.Call):
             if not isinstance(node.func, ast.Name) or node.func.id not in FUNCTIONS:
                 raise BoundError(f"unknown function in '{ast.unparse(node)}'; allowed: "
@@ -112,7 +131,10 @@ def evaluate(text, names):
         raise BoundError(f"'{ast.unparse(node)}' is not allowed (numbers, + - * / **, "
                          "functions, pi and constants only)")
 
-    v = ev(tree)
+    try:
+        v = ev(tree)
+    except (RecursionError, MemoryError):
+        raise BoundError("nested too deeply to evaluate") from None
     if isinstance(v, complex):
         raise BoundError("the value is complex")
     return v
@@ -159,6 +181,8 @@ def constant_sources(text):
 def evaluate_constants(table):
     """(values, errors): each constant over those above it."""
     values, errors = {}, []
+    if not isinstance(table, dict):
+        return values, [f"constants: must be a table of name = \"expression\" (got {table!r:.40})"]
     for name, text in table.items():
         if not isinstance(text, str):
             errors.append(f"constants.{name}: must be a string expression (got {text!r})")
@@ -167,9 +191,15 @@ def evaluate_constants(table):
             errors.append(f"constants.{name}: the name is taken by pi or a function")
             continue
         try:
-            values[name] = evaluate(text, values)
+            v = evaluate(text, values)
         except BoundError as e:
-            errors.append(f"constants.{name} = \"{text}\": {e}")
+            errors.append(f"constants.{name} = \"{text[:80]}\": {e}")
+            continue
+        if not math.isfinite(v):
+            errors.append(f"constants.{name} = \"{text[:80]}\": evaluates to {v}; a constant "
+                          "is a finite number")
+            continue
+        values[name] = v
     return values, errors
 
 
@@ -214,7 +244,7 @@ def expected_problems(th, constants):
         try:
             ends.append(evaluate(text, constants))
         except BoundError as e:
-            problems.append(f"expected_bound \"{text}\": {e}")
+            problems.append(f"expected_bound \"{text[:80]}\": {e}")
     if problems:
         return problems
     lo_b, hi_b = ends
@@ -331,7 +361,7 @@ def classify(th, constants, table=None):
             b = evaluate(str(th["bound"]), constants)
         except BoundError as e:
             b = None
-            problems.append(f"bound \"{th['bound']}\": {e}")
+            problems.append(f"bound \"{str(th['bound'])[:80]}\": {e}")
         if b is not None:
             if not math.isfinite(b) or b < 0:
                 problems.append(f"bound evaluates to {b:g}: must be finite and >= 0")
@@ -359,13 +389,17 @@ def check(doc):
     constants, errors = evaluate_constants(doc.get("constants", {}))
     counts, offences = {}, []
     truths = doc.get("truths", {})
+    if not isinstance(truths, dict):
+        offences.append(f"[truths] must be a table of case = \"kind\" (got {truths!r:.40})")
+        truths = {}
     for case in sorted({th.get("case") for th in doc.get("threshold", [])
                         if th.get("against") == "truth"}):
         if case not in truths:
             offences.append(f"[truths] does not list {case}: state the kind of truth its bands "
                             "against \"truth\" were derived with")
     for th in doc.get("threshold", []):
-        category, problems = classify(th, constants, doc.get("constants", {}))
+        table = doc.get("constants", {})
+        category, problems = classify(th, constants, table if isinstance(table, dict) else {})
         row = counts.setdefault(th.get("engine", "?"), dict.fromkeys(
             ("derived", "by_construction", "known_breach", "other"), 0))
         row[category] += 1
@@ -442,6 +476,23 @@ def self_test():
         got = constant_sources(text)
         if len(got) != want:
             failures.append(f"self-test '{label}': {len(got)} offence(s) {got}, expected {want}")
+    for label, text in {
+        "a complex power": "(-8)**0.5",
+        "a 400-digit literal": "1" * 400,
+        "a 50,000-term sum": "+".join(["1"] * 50000),
+        "1e5 unary minus signs": "-" * 100000 + "1",
+    }.items():
+        try:
+            evaluate(text, {})
+            failures.append(f"self-test '{label}': accepted")
+        except BoundError:
+            pass
+    for label, doc in {
+        "constants that are not a table": 'constants = "x"\n',
+        "a constant that overflows": '[constants]\nbig = "1e300 * 1e300"\n',
+    }.items():
+        if not check(tomllib.loads(doc))[2]:
+            failures.append(f"self-test '{label}': accepted")
     _, _, errors = check(tomllib.loads('[constants]\na = "b + 1"\nb = "1"\n'))
     if not errors:
         failures.append("self-test: a constant using one defined below it was accepted")
