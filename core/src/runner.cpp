@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "planarbench/energy_budget.hpp"
+#include "planarbench/half_plane_guard.hpp"
 #include "planarbench/errors.hpp"
 #include "planarbench/run_spool.hpp"
 
@@ -151,6 +152,9 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
       }
       if (energy.runaway()) {
         throw EngineError(fmt::format("energy runaway at t = {:.9g} s: {}", t, energy.describe()));
+      }
+      if (const std::string inside = body_inside_half_plane(c, states); !inside.empty()) {
+        throw EngineError(fmt::format("at t = {:.9g} s {}", t, inside));
       }
       for (std::size_t j = 0; j < moving.size(); ++j) {
         const BodyState& s = states[static_cast<std::size_t>(moving[j])];

@@ -86,5 +86,21 @@ TEST(Box2dFaults, VelocityAtTheClampIsDivergedWhereFreeFallReachesIt) {
   EXPECT_NEAR(r.diverged_at_s, 2040 * 0.01, 0.02);
 }
 
+// issue 35: disk_backspin spun at 1e4 rad/s with mu 10 rolls off the end of
+// Box2D's ground box (the case's half-plane has none) and falls; its centre
+// ends 2.46 m below the ground. A body cannot be inside a half-plane it
+// touches: the run is diverged, naming body, half-plane and depth, at the
+// first sample past the surface
+TEST(Box2dFaults, ABodyBelowTheHalfPlaneItTouchesIsDiverged) {
+  const RunResult r = faults_test::run_shipped(
+      "disk_backspin", "box2d",
+      {{"bodies.disk.angular_velocity", "1e4"}, {"contact.friction", "10"}});
+  ASSERT_EQ(r.status, RunStatus::diverged) << r.reason;
+  EXPECT_NE(r.reason.find("the centre of mass of body 'disk' is"), std::string::npos) << r.reason;
+  EXPECT_NE(r.reason.find("below half-plane 'ground'"), std::string::npos) << r.reason;
+  // the shipped case as it is stays ok
+  EXPECT_EQ(faults_test::run_shipped("disk_backspin", "box2d", {}).status, RunStatus::ok);
+}
+
 }  // namespace
 }  // namespace pb
