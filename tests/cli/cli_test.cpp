@@ -405,13 +405,22 @@ fs::path mujoco_position_thresholds() {
   return p;
 }
 
+// writes `out`, a copy of results file `good` with run `run_group` damaged as
+// `kind` by tests/python/damage_results.py; "" or what could not be run
+std::string damage_copy(const fs::path& good, const fs::path& out, const std::string& kind,
+                        const std::string& run_group) {
+  const std::string py =
+      fmt::format("{} {}/tests/python/damage_results.py {} {} {} {} 2>&1", PB_PYTHON,
+                  PB_SOURCE_DIR, good.string(), out.string(), kind, run_group);
+  return std::system(py.c_str()) == 0 ? std::string() : "could not run " + py;
+}
+
 // `check` of a copy of the valid file with mujoco's run damaged as `kind`
 Outcome check_damaged(const std::string& kind) {
   const auto damaged = work_dir() / ("invalid_" + kind + ".h5");
-  const std::string py = std::string(PB_PYTHON) + " " + PB_SOURCE_DIR +
-                         "/tests/python/damage_results.py " + falling_ball_mujoco().string() +
-                         " " + damaged.string() + " " + kind + " /runs/falling_ball/mujoco 2>&1";
-  if (std::system(py.c_str()) != 0) return Outcome{-1, "could not run " + py};
+  const std::string failed =
+      damage_copy(falling_ball_mujoco(), damaged, kind, "/runs/falling_ball/mujoco");
+  if (!failed.empty()) return Outcome{-1, failed};
   return run("check --thresholds " + mujoco_position_thresholds().string() + " " +
              damaged.string());
 }
@@ -450,11 +459,8 @@ fs::path sliding_mujoco_thresholds() {
 
 Outcome check_known_damaged(const std::string& kind) {
   const auto damaged = work_dir() / ("known_" + kind + ".h5");
-  const std::string py = fmt::format("{} {}/tests/python/damage_results.py {} {} {} "
-                                     "/runs/sliding/mujoco 2>&1",
-                                     PB_PYTHON, PB_SOURCE_DIR, sliding_mujoco().string(),
-                                     damaged.string(), kind);
-  if (std::system(py.c_str()) != 0) return Outcome{-1, "could not run " + py};
+  const std::string failed = damage_copy(sliding_mujoco(), damaged, kind, "/runs/sliding/mujoco");
+  if (!failed.empty()) return Outcome{-1, failed};
   return run("check --thresholds " + sliding_mujoco_thresholds().string() + " " +
              damaged.string());
 }
@@ -507,10 +513,7 @@ TEST(Gate, ATruthOfAnotherKindIsRefused) {
   ASSERT_EQ(run("run --case concave_corner --engine analytic,reference --quiet --out " +
                 good.string()).exit_code, 0);
   const auto damaged = work_dir() / "truth_kind_converged.h5";
-  const std::string py = fmt::format("{} {}/tests/python/damage_results.py {} {} truth_converged "
-                                     "/runs/concave_corner/analytic 2>&1",
-                                     PB_PYTHON, PB_SOURCE_DIR, good.string(), damaged.string());
-  ASSERT_EQ(std::system(py.c_str()), 0);
+  ASSERT_EQ(damage_copy(good, damaged, "truth_converged", "/runs/concave_corner/analytic"), "");
   const std::string thresholds = std::string(PB_SOURCE_DIR) + "/cases/thresholds.toml ";
   // as run: judged (exit 1 only because the other cases' runs are not in the file)
   const auto judged = run("check --thresholds " + thresholds + good.string());
@@ -531,10 +534,7 @@ TEST(Gate, ARunBeyondItsBandsStepAssumptionFails) {
   ASSERT_EQ(run("run --case falling_ball --engine analytic,reference --quiet --out " +
                 good.string()).exit_code, 0);
   const auto damaged = work_dir() / "steps_assumed_many.h5";
-  const std::string py = fmt::format("{} {}/tests/python/damage_results.py {} {} steps_many "
-                                     "/runs/falling_ball/reference 2>&1",
-                                     PB_PYTHON, PB_SOURCE_DIR, good.string(), damaged.string());
-  ASSERT_EQ(std::system(py.c_str()), 0);
+  ASSERT_EQ(damage_copy(good, damaged, "steps_many", "/runs/falling_ball/reference"), "");
   const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
                      "/cases/thresholds.toml " + damaged.string());
   EXPECT_EQ(c.exit_code, 1) << c.output;

@@ -171,6 +171,17 @@ TEST(CmdImpacts, ShardsMergeToTheBitsOfOneProcessAndRepeatsAreTheSame) {
   EXPECT_NE(other.err.find("another study"), std::string::npos) << other.err;
 }
 
+// writes `original` back to JSON file `path`, then runs Python statement
+// `edit` on its object `t` and saves it; the shell's status (0: done)
+int rewrite_json(const fs::path& path, const std::string& original, const std::string& edit) {
+  std::ofstream(path) << original;
+  const std::string py = fmt::format(
+      "/usr/bin/python3 -c 'import json, sys; p = sys.argv[1]; t = json.load(open(p)); {}; "
+      "json.dump(t, open(p, \"w\"))' {}",
+      edit, path.string());
+  return std::system(py.c_str());
+}
+
 // A task file is input (issue 35): a prediction index past the table (it
 // crashed merge), -1 (it read a row from outside the table), a duplicate, a
 // task file of another model and one without parameters are each refused by
@@ -188,12 +199,7 @@ TEST(CmdImpacts, TamperedTaskFilesAreRefusedNamingFileAndField) {
     if (e.path().filename().string().ends_with(".0.json")) task = e.path();
   }
   ASSERT_FALSE(task.empty());
-  const std::string original = [&] {
-    std::ifstream in(task);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }();
+  const std::string original = file_bytes(task);
   struct Tamper {
     const char* edit;
     const char* field;
@@ -203,12 +209,7 @@ TEST(CmdImpacts, TamperedTaskFilesAreRefusedNamingFileAndField) {
                           Tamper{"t[\"predicted\"][1] = t[\"predicted\"][0]", "predicted[1]"},
                           Tamper{"t[\"model\"] = \"mujoco\"", "model, fold"},
                           Tamper{"t[\"parameters\"] = []", "parameters"}}) {
-    std::ofstream(task) << original;
-    const std::string py = fmt::format(
-        "/usr/bin/python3 -c 'import json, sys; p = sys.argv[1]; t = json.load(open(p)); {}; "
-        "json.dump(t, open(p, \"w\"))' {}",
-        x.edit, task.string());
-    ASSERT_EQ(std::system(py.c_str()), 0) << x.edit;
+    ASSERT_EQ(rewrite_json(task, original, x.edit), 0) << x.edit;
     const fs::path out = dir / "m.h5";
     const Finished m = impacts("merge " + work + " --data " + train.string() + " --out " +
                                out.string());
@@ -239,12 +240,7 @@ TEST(CmdImpacts, AStudyFileOutsideWhatFitWritesIsRefused) {
   };
   for (const Bad& x : {Bad{"t[\"folds\"] = 1000000", "folds"}, Bad{"t[\"folds\"] = -5", "folds"},
                        Bad{"t[\"folds\"] = \"two\"", "are not what `impacts fit --work` writes"}}) {
-    std::ofstream(study) << original;
-    const std::string py = fmt::format(
-        "/usr/bin/python3 -c 'import json, sys; p = sys.argv[1]; t = json.load(open(p)); {}; "
-        "json.dump(t, open(p, \"w\"))' {}",
-        x.edit, study.string());
-    ASSERT_EQ(std::system(py.c_str()), 0) << x.edit;
+    ASSERT_EQ(rewrite_json(study, original, x.edit), 0) << x.edit;
     const fs::path out = dir / "m.h5";
     const Finished m = impacts(fmt::format("merge {} --data {} --out {} -q", work.string(),
                                            train.string(), out.string()));

@@ -263,51 +263,6 @@ def expected_problems(th, constants):
     return problems
 
 
-STEP_CONSTANT = re.compile(r"steps")
-
-
-def step_constants(expr, table, seen=None):
-    """the constants of `table` an expression uses, directly or through others,
-    whose name says they count accepted steps (ref_steps, cc_ref_steps ...)"""
-    out = set()
-    for name in set(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", expr)):
-        if name in table and isinstance(table[name], str):
-            if STEP_CONSTANT.search(name):
-                out.add(name)
-            out |= step_constants(table[name], table)
-    return out
-
-
-def steps_problems(th, constants, table):
-    """a bound that assumes a run's accepted steps (a *steps* constant) states it
-    as steps_at_most, the least such constant, so that `check` can test it on
-    the run (issue 31); no steps_at_most without such a bound"""
-    used = step_constants(str(th.get("bound", "")), table)
-    have = th.get("steps_at_most")
-    if not used:
-        return [] if have is None else ["steps_at_most without a bound that assumes a step count"]
-    want = min(constants[n] for n in used if n in constants)
-    if have != want:
-        return [f"the bound assumes at most {want:g} accepted steps ({', '.join(sorted(used))}): "
-                f"state steps_at_most = {want:g} (got {have!r})"]
-    return []
-
-
-def depth_error_problems(th, constants, table):
-    """a bound that assumes a collider's recorded depth error (a *_mpr_err
-    constant) states it as depth_error_at_most, so that `check` tests the run's
-    record (issue 31)"""
-    used = {n for n in constants_used(str(th.get("bound", "")), table) if n.endswith("_mpr_err")}
-    have = th.get("depth_error_at_most")
-    if not used:
-        return [] if have is None else ["depth_error_at_most without a bound that assumes one"]
-    want = min(constants[n] for n in used if n in constants)
-    if have != want:
-        return [f"the bound assumes a depth error of at most {want:g} m ({', '.join(sorted(used))}):"
-                f" state depth_error_at_most = {want:g} (got {have!r})"]
-    return []
-
-
 def constants_used(expr, table):
     """every constant of `table` an expression uses, directly or through others"""
     out = set()
@@ -316,6 +271,35 @@ def constants_used(expr, table):
             out.add(name)
             out |= constants_used(table[name], table)
     return out
+
+
+# what a bound may assume of the run's own figures (issue 31), each stated as
+# a key `check` tests on the run: (key, the constants that assume it, the
+# figure in words); the least such constant is the value the key must state
+RUN_ASSUMPTIONS = (
+    ("steps_at_most", re.compile(r"steps"), "accepted steps"),
+    ("depth_error_at_most", re.compile(r"_mpr_err$"), "m of depth error"),
+)
+
+
+def assumption_problems(th, constants, table):
+    """a bound that uses a constant assuming a run's figure (a *steps* constant:
+    the accepted steps; a *_mpr_err one: the collider's recorded depth error)
+    states it under the key `check` tests; no such key without such a bound"""
+    used_all = constants_used(str(th.get("bound", "")), table)
+    problems = []
+    for key, pattern, what in RUN_ASSUMPTIONS:
+        used = {n for n in used_all if pattern.search(n)}
+        have = th.get(key)
+        if not used:
+            if have is not None:
+                problems.append(f"{key} without a bound that assumes it")
+            continue
+        want = min(constants[n] for n in used if n in constants)
+        if have != want:
+            problems.append(f"the bound assumes at most {want:g} {what} "
+                            f"({', '.join(sorted(used))}): state {key} = {want:g} (got {have!r})")
+    return problems
 
 
 def classify(th, constants, table=None):
@@ -350,8 +334,7 @@ def classify(th, constants, table=None):
         problems.append("no numeric atol or rtol")
         t = None
     problems += expected_problems(th, constants)
-    problems += steps_problems(th, constants, table or {})
-    problems += depth_error_problems(th, constants, table or {})
+    problems += assumption_problems(th, constants, table or {})
     why = th.get("why", "")
     for pattern, what in FORBIDDEN:
         if pattern.search(why):

@@ -41,7 +41,7 @@ struct Threshold {
   // an assumption of the band on the run's own figures (issue 31): it holds
   // for a run of at most this many accepted steps (the reference's rk45 error
   // grows with them); 0: none. `check` fails the threshold, naming the
-  // assumption, when the run took more (check_step_assumptions)
+  // assumption, when the run took more (check_run_assumptions)
   long steps_at_most = 0;
   // the same for the depth error of an engine's collider the band assumes
   // (MuJoCo's MPR on circle-ellipse, which the run records against the exact
