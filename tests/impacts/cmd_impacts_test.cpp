@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <sstream>
 
 #include <fstream>
@@ -355,6 +356,23 @@ TEST(CmdImpacts, BadInputIsRefusedNamingTheVariableAndLeavesNoFile) {
 // write_mat.py's own numpy implementation of the rigid law: an independent
 // writer and an independent law. The rigid baseline's fit must recover the
 // law's e and mu, and predict every impact: the two implementations agree.
+TEST(CmdImpacts, AMatV73FileIsRefusedInOneLine) {
+  // issue 35 item 15: libmatio reads v7.3 through HDF5, whose failed calls
+  // printed their error stack before the one-line refusal
+  const fs::path dir = fresh_dir("v73");
+  for (const char* kind : {"struct", "int32", "garbage"}) {
+    const fs::path file = dir / (std::string(kind) + ".mat");
+    const Finished w = run_shell(std::string(PB_PYTHON) + " " + PB_SOURCE_DIR +
+                                 "/tests/impacts/write_v73_mat.py " + file.string() + " " + kind);
+    ASSERT_EQ(w.exit.code, 0) << w.err;
+    const Finished f = impacts("fit --data " + file.string() + " --out " + (dir / "f.h5").string());
+    EXPECT_EQ(f.exit.code, 2) << kind;
+    EXPECT_EQ(std::count(f.err.begin(), f.err.end(), '\n'), 1) << kind << ":\n" << f.err;
+    EXPECT_NE(f.err.find(file.string() + ": "), std::string::npos) << f.err;
+    EXPECT_FALSE(fs::exists(dir / "f.h5"));
+  }
+}
+
 TEST(CmdImpacts, AScipyFileOfAnIndependentRigidLawIsFittedExactly) {
   const fs::path dir = fresh_dir("scipy");
   const fs::path file = dir / "numpy_rigid.mat";

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <matio.h>
 
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -43,8 +44,11 @@ std::string refusal(const fs::path& path) {
   return "(read without error)";
 }
 
-// a MAT file with one struct `data` holding the given double fields
-void write_struct(const fs::path& path, const std::vector<std::pair<const char*, std::vector<std::size_t>>>& fields) {
+// a MAT file with one struct `data` holding the given fields, of doubles
+// (0.5 each) but for the field named `int32_field`, of int32 zeros
+void write_struct(const fs::path& path,
+                  const std::vector<std::pair<const char*, std::vector<std::size_t>>>& fields,
+                  const std::string& int32_field = "") {
   mat_t* mat = Mat_CreateVer(path.string().c_str(), nullptr, MAT_FT_MAT5);
   ASSERT_NE(mat, nullptr);
   std::vector<const char*> names;
@@ -53,11 +57,23 @@ void write_struct(const fs::path& path, const std::vector<std::pair<const char*,
   std::size_t one[2] = {1, 1};
   matvar_t* data = Mat_VarCreateStruct2("data", 2, one, names.data());
   std::vector<std::vector<double>> storage;
+  std::vector<std::vector<std::int32_t>> ints;
   for (const auto& [name, dims] : fields) {
-    storage.emplace_back(dims[0] * dims[1], 0.5);
-    std::size_t d[2] = {dims[0], dims[1]};
-    Mat_VarSetStructFieldByName(
-        data, name, 0, Mat_VarCreate(name, MAT_C_DOUBLE, MAT_T_DOUBLE, 2, d, storage.back().data(), 0));
+    std::size_t count = 1;
+    for (const std::size_t k : dims) count *= k;
+    std::vector<std::size_t> d = dims;
+    const int rank = static_cast<int>(d.size());
+    if (name == int32_field) {
+      ints.emplace_back(count, 0);
+      Mat_VarSetStructFieldByName(data, name, 0,
+                                  Mat_VarCreate(name, MAT_C_INT32, MAT_T_INT32, rank, d.data(),
+                                                ints.back().data(), 0));
+    } else {
+      storage.emplace_back(count, 0.5);
+      Mat_VarSetStructFieldByName(data, name, 0,
+                                  Mat_VarCreate(name, MAT_C_DOUBLE, MAT_T_DOUBLE, rank, d.data(),
+                                                storage.back().data(), 0));
+    }
   }
   ASSERT_EQ(Mat_VarWrite(mat, data, MAT_COMPRESSION_NONE), 0);
   Mat_VarFree(data);
@@ -139,7 +155,7 @@ TEST(ImpactData, AFileOfAnotherLayoutIsRefusedNamingTheVariable) {
   write_struct(dir / "five.mat", {{"states_i", {4, 5}}, {"states_f", {4, 6}}, {"n", {4, 3}}, {"d", {4, 3}}, {"drop", {1, 4}}});
   const std::string five = refusal(dir / "five.mat");
   EXPECT_NE(five.find("data.states_i"), std::string::npos) << five;
-  EXPECT_NE(five.find("4 x 6"), std::string::npos) << five;
+  EXPECT_NE(five.find("N x 6"), std::string::npos) << five;
   EXPECT_NE(five.find("4 x 5"), std::string::npos) << five;
   // states_f missing
   write_struct(dir / "nof.mat", {{"states_i", {4, 6}}, {"n", {4, 3}}, {"d", {4, 3}}, {"drop", {1, 4}}});
@@ -172,4 +188,72 @@ TEST(ImpactData, ANonFiniteStateIsRefusedWithItsRowAndColumn) {
   const std::string why = refusal(file);
   EXPECT_NE(why.find("data.states_f"), std::string::npos) << why;
   EXPECT_NE(why.find("row 4 column 5"), std::string::npos) << why;
+}
+
+TEST(ImpactData, AMisshapenStatesMatrixIsNamedForWhatItIs) {
+  // issue 35 item 16: a transposed states_i said "must be 6 x 6 (got 6 x 20)",
+  // a 3-D one "missing", int32 data "got class 12"
+  const fs::path dir = work_dir();
+  const std::vector<std::pair<const char*, std::vector<std::size_t>>> rest = {
+      {"states_f", {20, 6}}, {"n", {20, 3}}, {"d", {20, 3}}, {"drop", {1, 20}}};
+  auto with_states_i = [&](std::vector<std::size_t> dims) {
+    auto fields = rest;
+    fields.insert(fields.begin(), {"states_i", std::move(dims)});
+    return fields;
+  };
+  write_struct(dir / "transposed.mat", with_states_i({6, 20}));
+  const std::string transposed = refusal(dir / "transposed.mat");
+  EXPECT_NE(transposed.find("data.states_i: must be N x 6"), std::string::npos) << transposed;
+  EXPECT_NE(transposed.find("got 6 x 20: transposed?"), std::string::npos) << transposed;
+
+  write_struct(dir / "three_d.mat", with_states_i({20, 6, 2}));
+  const std::string three_d = refusal(dir / "three_d.mat");
+  EXPECT_NE(three_d.find("data.states_i: must be a 2-D matrix"), std::string::npos) << three_d;
+  EXPECT_NE(three_d.find("got 3 dimensions: 20 x 6 x 2"), std::string::npos) << three_d;
+
+  write_struct(dir / "int32.mat", with_states_i({20, 6}), "states_i");
+  const std::string int32 = refusal(dir / "int32.mat");
+  EXPECT_NE(int32.find("data.states_i: must be a real double matrix"), std::string::npos) << int32;
+  EXPECT_NE(int32.find("(got int32)"), std::string::npos) << int32;
+}
+
+TEST(ImpactData, AStateNoDropCouldHaveIsRefusedWithItsRowAndColumn) {
+  // issue 35 items 10 and 16: one 1e308 row was read and then refused as "no
+  // angle convention conserves ..." without a row; impacts at 2.9e5 m/s ran
+  const fs::path file = work_dir() / "limits.mat";
+  struct Damage {
+    bool post;
+    std::size_t column;
+    double value;
+    const char* said;
+  };
+  for (const Damage& d : {Damage{false, 4, 1e308, "data.states_i: row 4 column 5 (y') is 1e+308 m/s"},
+                          Damage{true, 3, -2.9e5, "data.states_f: row 4 column 4 (x') is -290000 m/s"},
+                          Damage{false, 5, 2e4, "row 4 column 6 (theta') is 20000 rad/s"},
+                          Damage{false, 0, 150.0, "row 4 column 1 (x) is 150 m"}}) {
+    pb::ImpactSet set = small_set();
+    (d.post ? set.post : set.pre)[3][d.column] = d.value;
+    pb::write_impacts(file, set);
+    const std::string why = refusal(file);
+    EXPECT_NE(why.find(d.said), std::string::npos) << why;
+    EXPECT_NE(why.find("must be a finite number within"), std::string::npos) << why;
+  }
+  // the limits are 20 to 200 times the MCube drops': 99 m/s is read
+  pb::ImpactSet fast = small_set();
+  fast.pre[3][3] = 99.0;
+  pb::write_impacts(file, fast);
+  EXPECT_NO_THROW((void)pb::read_impacts(file));
+}
+
+TEST(ImpactData, AnImpactThatChangesNothingIsRefused) {
+  // issue 35 item 10: a file whose every impact has post = pre scored "n/a"
+  // everywhere and exited 0
+  const fs::path file = work_dir() / "no_impact.mat";
+  pb::ImpactSet same = small_set();
+  same.post = same.pre;
+  pb::write_impacts(file, same);
+  const std::string why = refusal(file);
+  EXPECT_NE(why.find("data.states_f: row 1: the velocities after the impact equal those before"),
+            std::string::npos)
+      << why;
 }

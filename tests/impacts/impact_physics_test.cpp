@@ -6,6 +6,7 @@
 // restitution at the contact point, the Coulomb bound, the momentum about
 // the contact point), and on the shared file the figures its README measured
 // with scipy (an independent computation).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -168,6 +169,29 @@ TEST(ImpactConvention, DataThatConserveNothingAreRefusedWithTheFigure) {
     EXPECT_NE(m.find("slope"), std::string::npos) << m;
     EXPECT_NE(m.find("data.states_i, data.states_f"), std::string::npos) << m;
   }
+}
+
+TEST(ImpactConvention, TooFewImpactsAreRefusedAsTooFew) {
+  // issue 35 item 16: 1 or 2 impacts said "no angle convention conserves ...";
+  // 2 points always correlate +-1, so the check cannot decide on them
+  for (const std::size_t n : {std::size_t{1}, std::size_t{2}, pb::kMinImpacts - 1}) {
+    const pb::ImpactSet set = pb::test::synthetic_impacts(n, 3, [](const pb::ImpactState& s) {
+      return pb::rigid_impact(kObject, s, 0.6, 0.2);
+    });
+    try {
+      (void)pb::check_convention(set, kObject);
+      FAIL() << n << " impacts accepted";
+    } catch (const pb::InputError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find(fmt::format("has {} impact", n)), std::string::npos) << m;
+      EXPECT_NE(m.find("too few to decide the angle convention"), std::string::npos) << m;
+    }
+  }
+  // at the minimum, impacts of the rigid law are decided
+  const pb::ImpactSet enough = pb::test::synthetic_impacts(pb::kMinImpacts, 3, [](const pb::ImpactState& s) {
+    return pb::rigid_impact(kObject, s, 0.6, 0.2);
+  });
+  EXPECT_NEAR(pb::check_convention(enough, kObject).best().slope, 1.0, 1e-12);  // exact law: rounding only
 }
 
 // The shared training file, where it exists: the figures its README measured

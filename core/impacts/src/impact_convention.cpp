@@ -52,6 +52,12 @@ ConventionFit fit(const ImpactSet& set, const ImpactObject& o, AngleConvention c
 }  // namespace
 
 ConventionCheck check_convention(const ImpactSet& set, const ImpactObject& o) {
+  if (set.size() < kMinImpacts) {
+    throw InputError(set.path, 0, "data.states_i",
+                     fmt::format("has {} impact{}: too few to decide the angle convention (a "
+                                 "correlation over the impacts); at least {} needed",
+                                 set.size(), set.size() == 1 ? "" : "s", kMinImpacts));
+  }
   ConventionCheck check;
   const std::array<AngleConvention, 4> pairs = {
       AngleConvention{1.0, 1.0}, AngleConvention{-1.0, 1.0}, AngleConvention{1.0, -1.0},

@@ -3,11 +3,15 @@
 #include <fmt/format.h>
 #include <matio.h>
 
+#include <array>
+#include <cmath>
 #include <fstream>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
+#include "internal/hdf5_handle.hpp"
 #include "internal/hdf5_sha256.hpp"
 #include "planarbench/errors.hpp"
 
@@ -35,28 +39,119 @@ std::string shape_of(const matvar_t* v) {
   return s;
 }
 
+// MATLAB's name of a class (libmatio's enum matio_classes)
+std::string class_name(matio_classes c) {
+  static constexpr std::array<const char*, 18> names = {
+      "empty", "cell",  "struct", "object", "char",   "sparse", "double", "single", "int8",
+      "uint8", "int16", "uint16", "int32",  "uint32", "int64",  "uint64", "function", "opaque"};
+  const auto k = static_cast<std::size_t>(c);
+  return k < names.size() ? names[k] : fmt::format("class {}", k);
+}
+
+// a real double matrix, 2-D (what every variable of the layout is)
+void require_real_double_2d(const std::string& path, const std::string& name, const matvar_t* v,
+                            const std::string& shape) {
+  if (v->class_type != MAT_C_DOUBLE || v->isComplex) {
+    refuse(path, name,
+           fmt::format("must be a real double matrix of {} (got {}{}): store the values as double",
+                       shape, v->isComplex ? "complex " : "", class_name(v->class_type)));
+  }
+  if (v->rank != 2) {
+    refuse(path, name,
+           fmt::format("must be a 2-D matrix of {} (got {} dimensions: {})", shape, v->rank,
+                       shape_of(v)));
+  }
+  if (v->data == nullptr) refuse(path, name, fmt::format("has no data (a matrix of {} expected)", shape));
+}
+
 // a real double matrix of `rows` x `cols` (cols == 0: a vector of rows
 // entries, 1 x n or n x 1) in column-major order
 std::vector<double> matrix(const std::string& path, const std::string& name, matvar_t* v,
                            std::size_t rows, std::size_t cols) {
-  if (v == nullptr) refuse(path, name, "missing: " + name + " must be a double matrix");
-  if (v->class_type != MAT_C_DOUBLE || v->isComplex || v->rank != 2 || v->data == nullptr) {
-    refuse(path, name,
-           fmt::format("must be a real double matrix (got class {}, rank {}{})",
-                       static_cast<int>(v->class_type), v->rank, v->isComplex ? ", complex" : ""));
-  }
+  const std::string shape =
+      cols == 0 ? fmt::format("{} values", rows) : fmt::format("{} x {}", rows, cols);
+  if (v == nullptr) refuse(path, name, "missing: a double matrix of " + shape + " expected");
+  require_real_double_2d(path, name, v, shape);
   const std::size_t r = v->dims[0];
   const std::size_t c = v->dims[1];
   const bool ok = cols == 0 ? (r == rows && c == 1) || (r == 1 && c == rows)
                             : (r == rows && c == cols);
   if (!ok) {
+    const bool transposed = cols != 0 && r == cols && c == rows;
     refuse(path, name,
-           fmt::format("must be {} (got {})",
-                       cols == 0 ? fmt::format("{} values", rows) : fmt::format("{} x {}", rows, cols),
-                       shape_of(v)));
+           fmt::format("must be {} (got {}{})", shape, shape_of(v),
+                       transposed ? ": transposed? one impact per row" : ""));
   }
   const auto* d = static_cast<const double*>(v->data);
   return std::vector<double>(d, d + r * c);
+}
+
+// The number of impacts, from data.states_i: N x 6, one impact per row
+std::size_t impact_count(const std::string& path, const matvar_t* states_i) {
+  const std::string name = "data.states_i";
+  const std::string shape = "N x 6 (one impact per row)";
+  if (states_i == nullptr) refuse(path, name, "missing: a double matrix of " + shape + " expected");
+  require_real_double_2d(path, name, states_i, shape);
+  if (states_i->dims[1] != 6) {
+    const bool transposed = states_i->dims[0] == 6;
+    refuse(path, name,
+           fmt::format("must be {} (got {}{})", shape, shape_of(states_i),
+                       transposed ? ": transposed? store it as its transpose" : ""));
+  }
+  if (states_i->dims[0] == 0) refuse(path, name, "has no impacts (0 rows)");
+  return states_i->dims[0];
+}
+
+// What a state of a drop onto a horizontal surface can be: x, y (m), theta
+// (rad), x', y' (m/s), theta' (rad/s). The MCube drops reach |x|, |y| 0.51 m,
+// |theta| 10.5 rad, speeds 2.9 m/s (1.3 after) and 76 rad/s
+// (../shared/data/mcube/README.md); the limits are 20 to 200 times those, far
+// past any bench drop (100 m/s is a fall of 510 m), and keep every engine's
+// step well inside its range (issue 35: 2.9e5 m/s ran "ok" at 29 m per step).
+struct StateLimit {
+  const char* column;
+  const char* unit;
+  double limit;
+};
+constexpr std::array<StateLimit, 6> kStateLimits = {{{"x", "m", 100.0},
+                                                     {"y", "m", 100.0},
+                                                     {"theta", "rad", 1000.0},
+                                                     {"x'", "m/s", 100.0},
+                                                     {"y'", "m/s", 100.0},
+                                                     {"theta'", "rad/s", 1e4}}};
+
+// a value of row i (1-based column j) within its column's limit
+void check_value(const std::string& path, const char* variable, std::size_t i, std::size_t j,
+                 const std::string& column, const StateLimit& lim, double v) {
+  if (std::isfinite(v) && std::abs(v) <= lim.limit) return;
+  refuse(path, variable,
+         fmt::format("row {} column {} ({}) is {:g} {}: must be a finite number within +-{:g} {}",
+                     i + 1, j + 1, column, v, lim.unit, lim.limit, lim.unit));
+}
+
+void check_states(const ImpactSet& set) {
+  const std::string& p = set.path;
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    for (std::size_t j = 0; j < 6; ++j) {
+      check_value(p, "data.states_i", i, j, kStateLimits[j].column, kStateLimits[j], set.pre[i][j]);
+      check_value(p, "data.states_f", i, j, kStateLimits[j].column, kStateLimits[j], set.post[i][j]);
+    }
+    // (x', y', theta') of each stored model
+    for (std::size_t j = 0; j < (set.models.empty() ? 0 : 18); ++j) {
+      const StateLimit& lim = kStateLimits[3 + j % 3];
+      check_value(p, "v_models", i, j, fmt::format("{} of {}", lim.column, kStoredModelNames[j / 3]),
+                  lim, set.models[i][j]);
+    }
+    // the impact changes the velocity (every error is relative to that change;
+    // whether the body approaches the ground is impact_arc_problem's, by its arc)
+    if (set.pre[i][3] == set.post[i][3] && set.pre[i][4] == set.post[i][4] &&
+        set.pre[i][5] == set.post[i][5]) {
+      refuse(p, "data.states_f",
+             fmt::format("row {}: the velocities after the impact equal those before: no "
+                         "impact to predict (errors are relative to the velocity change)",
+                         i + 1));
+    }
+  }
 }
 
 template <std::size_t N>
@@ -147,6 +242,9 @@ ImpactSet read_impacts(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path, ec)) refuse(p, "--data", "is not a readable file");
   std::string matio_log;
   const MatioLogScope log_scope(matio_log);
+  // libmatio reads MAT v7.3 through HDF5, whose failed calls print their
+  // error stack (26 lines, issue 35 item 15); the refusal below says it once
+  const internal::QuietHdf5 quiet;
   MatFile mat(Mat_Open(p.c_str(), MAT_ACC_RDONLY));
   if (!mat) refuse(p, "--data", "is not a MAT file libmatio can read (MAT v5 or v7.3 expected)");
   const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
@@ -159,11 +257,7 @@ ImpactSet read_impacts(const std::filesystem::path& path) {
     refuse(p, "data", "missing or not a struct: data (states_i, states_f, n, d, drop) expected");
   }
   matvar_t* states_i = Mat_VarGetStructFieldByName(data.get(), "states_i", 0);
-  if (states_i == nullptr || states_i->rank != 2) {
-    refuse(p, "data.states_i", "missing: an N x 6 double matrix of pre-impact states expected");
-  }
-  const std::size_t n = states_i->dims[0];
-  if (n == 0) refuse(p, "data.states_i", "has no impacts (0 rows)");
+  const std::size_t n = impact_count(p, states_i);
   ImpactSet set;
   set.path = p;
   set.pre = rows_of<6>(matrix(p, "data.states_i", states_i, n, 6), n);
@@ -179,15 +273,7 @@ ImpactSet read_impacts(const std::filesystem::path& path) {
   if (!matio_log.empty()) {
     refuse(p, "--data", "is truncated or damaged (libmatio: " + matio_log + ")");
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = 0; j < 6; ++j) {
-      if (!std::isfinite(set.pre[i][j]) || !std::isfinite(set.post[i][j])) {
-        refuse(p, fmt::format("data.states_{}", std::isfinite(set.pre[i][j]) ? 'f' : 'i'),
-               fmt::format("row {} column {} is not finite: every state must be a finite number",
-                           i + 1, j + 1));
-      }
-    }
-  }
+  check_states(set);
   set.sha256 = file_sha256(path);
   return set;
 }
