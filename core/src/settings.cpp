@@ -151,9 +151,14 @@ SettingsBinder& SettingsBinder::reals(const std::string& key, std::vector<double
 }
 
 void SettingsBinder::apply(const SettingsOverrides& overrides) const {
-  // shared "key" first, then "engine.key", so the prefixed one wins
+  // shared "key" first, then "engine.key", so the prefixed one wins; a shared
+  // key's refusal names the engine whose range it broke (--engine all applies
+  // it to every engine, each with its own range)
   for (const auto& spec : specs_) {
-    if (const auto* v = overrides.find(spec.key)) spec.parse(*v, spec.key);
+    if (const auto* v = overrides.find(spec.key)) {
+      spec.parse(*v, fmt::format("{} (for {}; {}.{} sets {}'s alone)", spec.key, engine_, engine_,
+                                 spec.key, engine_));
+    }
     const std::string full = engine_ + "." + spec.key;
     if (const auto* v = overrides.find(full)) spec.parse(*v, full);
   }

@@ -64,6 +64,23 @@ TEST(Settings, BadValuesNameTheKeyAndTheRange) {
   expect_error("solimp", "1 2 3", "list of 5 finite numbers");
 }
 
+TEST(Settings, ASharedKeysRefusalNamesTheEngineWhoseRangeItBroke) {
+  // issue 35 item 16: `--set dt=0.1 --engine all` gave a range without saying
+  // which engine's it was (each engine has its own)
+  DemoSettings s;
+  SettingsOverrides o;
+  o.set("dt", "1", {"--set", 0});
+  try {
+    bind(s).apply(o);
+    FAIL() << "dt=1 accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("dt (for demo; demo.dt sets demo's alone): must be a "
+                                         "finite number in [1e-07, 0.1]"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Settings, KnowsAndJson) {
   DemoSettings s;
   const auto b = bind(s);
