@@ -111,8 +111,10 @@ std::vector<RunOutOfScope> runs_out_of_scope(const ResultsFile& results,
         }
         continue;
       }
-      // an unsupported run has nothing to judge
-      if (r.status == RunStatus::unsupported) continue;
+      // an unsupported run too: unsupported in the settings the bands were
+      // derived for, its metrics are missing (a breach); in others, it is out
+      // of scope (issue 35 item 12: mode inject on a friction case said "not
+      // computed" instead of naming the setting)
       RunOutOfScope s{fmt::format("{}.{}", cr.case_name, r.engine_name), case_differences};
       const nlohmann::json want = derived_settings(r.engine_name, derived);
       for (const auto& [key, value] : want.items()) {

@@ -315,6 +315,23 @@ TEST(Gate, ALookAheadIsRefused) {
   EXPECT_TRUE(contains(c.output, "falling_ball.mujoco (steps_before_start = 3")) << c.output;
 }
 
+// An unsupported run made in other settings than the bands' is out of scope
+// too (issue 35 item 12: mode inject on a friction case is unsupported, and
+// check said "not computed", exit 1, instead of naming the setting).
+TEST(Gate, AnUnsupportedRunInOtherSettingsIsRefused) {
+  const auto out = work_dir() / "gate_inject_friction.h5";
+  const auto r = run("run --case block_slide --engine analytic,box2d,ode --quiet "
+                     "--set box2d.mode=inject --set ode.mode=inject --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
+                     "/cases/thresholds.toml " + out.string());
+  EXPECT_EQ(c.exit_code, 2) << c.output;
+  EXPECT_TRUE(contains(c.output, "2 run(s) made outside what the thresholds were derived for"))
+      << c.output;
+  EXPECT_TRUE(contains(c.output, "block_slide.box2d (box2d.mode = \"inject\" (derived for \"native\"))"))
+      << c.output;
+}
+
 // Results made with foreknowledge (MuJoCo's and ODE's `oracle` modes: a probe
 // run of the case calibrates the mapping) are refused, naming every such run,
 // the mode and the foreknowledge; nothing is written.
