@@ -10,6 +10,8 @@
 
 #include "cli_common.hpp"
 #include "planarbench/case_loader.hpp"
+#include "planarbench/did_you_mean.hpp"
+#include "planarbench/errors.hpp"
 #include "planarbench/engines.hpp"
 #include "planarbench/reports/thresholds.hpp"
 
@@ -53,7 +55,39 @@ nlohmann::json derived_settings(const std::string& engine, const Case& derived) 
   return e->settings().to_json();
 }
 
+// what `covers` may hold besides setting and case keys
+const std::vector<std::string>& cover_words() {
+  static const std::vector<std::string> words = {"foreknowledge", "outline_points", "case_file",
+                                                 "truth"};
+  return words;
+}
+
 }  // namespace
+
+void check_covers(const std::filesystem::path& thresholds_file, const std::vector<std::string>& covers,
+                  const std::vector<int>& lines) {
+  for (std::size_t i = 0; i < covers.size(); ++i) {
+    const std::string& c = covers[i];
+    const auto& words = cover_words();
+    if (std::find(words.begin(), words.end(), c) != words.end() || is_case_key(c) ||
+        is_engine_setting_key(c)) {
+      continue;
+    }
+    // the candidates a typo is likely of: every engine's keys, bare and prefixed
+    std::vector<std::string> candidates = words;
+    for (const auto& engine : engine_names()) {
+      const nlohmann::json settings = make_engine(engine)->settings().to_json();
+      for (auto it = settings.begin(); it != settings.end(); ++it) {
+        candidates.push_back(it.key());
+        candidates.push_back(engine + "." + it.key());
+      }
+    }
+    throw InputError(thresholds_file.string(), i < lines.size() ? lines[i] : 0, "covers",
+                     fmt::format("'{}' is no engine setting key (`planarbench list --settings`), "
+                                 "case key, or one of {}{}",
+                                 c, join_words(words), did_you_mean(c, candidates)));
+  }
+}
 
 std::vector<RunOutOfScope> runs_out_of_scope(const ResultsFile& results,
                                              const std::vector<Case>& cases,

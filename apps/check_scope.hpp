@@ -36,6 +36,13 @@ struct RunOutOfScope {
 // `truths` (the thresholds file's [truths], case -> kind) refuses a truth run
 // (the analytic engine's) of another kind than its case's bands assumed,
 // unless `covers` holds "truth".
+// Throws InputError naming the thresholds file, the line and the entry when
+// an entry of `covers` is none of what runs_out_of_scope reads (a setting key
+// of some engine, a case key, "foreknowledge", "outline_points", "case_file",
+// "truth"): a typo ("mujoco.dtt") covered nothing and was accepted.
+void check_covers(const std::filesystem::path& thresholds_file, const std::vector<std::string>& covers,
+                  const std::vector<int>& lines);
+
 [[nodiscard]] std::vector<RunOutOfScope> runs_out_of_scope(
     const ResultsFile& results, const std::vector<Case>& cases,
     const std::filesystem::path& thresholds_file,

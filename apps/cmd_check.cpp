@@ -70,6 +70,7 @@ RunFigures run_figures(const RunResult& r) {
 int run_check(const CheckOptions& opt) {
   // everything that can be checked before the (large) results file is read
   const ThresholdsFile file = load_thresholds_file(opt.thresholds);
+  check_covers(opt.thresholds, file.covers, file.covers_lines);
   const auto& thresholds = file.thresholds;
   const std::filesystem::path res(opt.results);
   const auto stem = res.parent_path() / res.stem();

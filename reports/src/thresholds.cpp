@@ -175,6 +175,7 @@ ThresholdsFile load_thresholds_file(const std::filesystem::path& path) {
         throw InputError(file, line_of(n), "covers", bad(n));
       }
       loaded.covers.push_back(n.as_string()->get());
+      loaded.covers_lines.push_back(line_of(n));
     }
   }
   // [truths]: the kind of truth each case's bands were derived with

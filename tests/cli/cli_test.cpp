@@ -395,6 +395,25 @@ TEST(Gate, BadThresholdsFileIsBadInput) {
   EXPECT_TRUE(contains(c.output, "restitutoin")) << c.output;
 }
 
+TEST(Gate, ATypoInCoversIsBadInput) {
+  // issue 35 item 11: covers = ["mujoco.dtt"] covered nothing and was accepted
+  const auto bad = work_dir() / "typo_covers.toml";
+  {
+    std::ofstream f(bad);
+    f << "covers = [\"dt\", \"foreknowledge\", \"contact.stiffness\",\n  \"mujoco.dtt\"]\n"
+         "[[threshold]]\ncase = \"falling_ball\"\nengine = \"ode\"\nagainst = \"truth\"\n"
+         "metric = \"restitution\"\natol = 1\nwhy = \"x\"\n";
+  }
+  const auto out = work_dir() / "gate_typo_covers.h5";
+  ASSERT_EQ(run("run --case falling_ball --engine analytic --quiet --out " + out.string()).exit_code,
+            0);
+  const auto c = run("check --thresholds " + bad.string() + " " + out.string());
+  EXPECT_EQ(c.exit_code, 2) << c.output;
+  EXPECT_TRUE(contains(c.output, "typo_covers.toml:2: covers: 'mujoco.dtt' is no engine setting key"))
+      << c.output;
+  EXPECT_TRUE(contains(c.output, "(did you mean 'mujoco.dt'?)")) << c.output;
+}
+
 // ---- invalid data (issue 24, point 4) ----------------------------------------------
 // A results file damaged by tests/python/damage_results.py (h5py alone): NaN in
 // a run's samples fails that run's checks (exit 1) naming the run and the

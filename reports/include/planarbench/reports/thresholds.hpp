@@ -64,6 +64,7 @@ struct Threshold {
 struct ThresholdsFile {
   std::vector<Threshold> thresholds;
   std::vector<std::string> covers;
+  std::vector<int> covers_lines;  // covers[i]'s line in the file
   // [truths]: case -> the kind of truth its bands against "truth" were derived
   // with (truth_kinds()); `check` refuses a run whose truth was another kind
   // (the independent truth failed at run time and the converged reference
