@@ -11,6 +11,7 @@
 #include <set>
 #include <toml++/toml.h>
 
+#include "campaign_points.hpp"
 #include "campaign_size.hpp"
 #include "cli_common.hpp"
 #include "planarbench/case_loader.hpp"
@@ -651,53 +652,11 @@ CampaignPlan load_campaign(const fs::path& file, const std::string& cases_dir_op
   }
 
   // ---- every axis point against every case and engine, before anything runs ----
-  std::int64_t to_check = 0;
-  for (const auto& a : plan.axes) {
-    to_check += static_cast<std::int64_t>(plan.cases.size()) *
-                (a.axis.kind == "perturb" ? 1 : static_cast<std::int64_t>(a.axis.values.size()));
-  }
-  PlanProgress checking("checking every axis point against every case and engine", to_check, quiet);
-  std::int64_t checked = 0;
+  std::vector<int> axis_lines;
   for (std::size_t k = 0; k < plan.axes.size(); ++k) {
-    const CampaignAxisPlan& a = plan.axes[k];
-    const std::string where = fmt::format("axis[{}]", k);
-    const toml::node* node = &(*root.get("axis")->as_array())[k];
-    // this axis alone: the others are checked on their own
-    CampaignPlan single;
-    single.engines = plan.engines;
-    single.axes = {a};
-    for (const CampaignCasePlan& cp : plan.cases) {
-      single.cases = {cp};
-      if (a.axis.kind == "perturb" && a.body != "*" &&
-          std::none_of(cp.c.bodies.begin(), cp.c.bodies.end(),
-                       [&](const Body& b) { return !b.fixed && b.name == a.body; })) {
-        in.fail(node, where + ".key",
-                fmt::format("case '{}' has no moving body '{}' (its moving bodies: {}); use "
-                            "bodies.*.{} for every moving body of each case",
-                            cp.c.name, a.body, join_words(cp.moving_bodies), a.field));
-      }
-      // a random axis: its first sample stands for the rest (same keys and types)
-      const std::size_t points = a.axis.kind == "perturb" ? 1 : a.axis.values.size();
-      for (std::size_t p = 0; p < points; ++p) {
-        checking.tick(++checked);
-        CampaignPlan::RunRef r;
-        r.point = {p};
-        std::vector<std::string> assignments = set_assignments;
-        for (const auto& [key, value] : single.assignments(r)) assignments.push_back(key + "=" + value);
-        try {
-          const Overrides o = parse_overrides(assignments);
-          const Case loaded = load_case(cp.path, o.case_keys);
-          check_engine_settings(o.engine_keys, plan.engines);
-          const SettingsOverrides settings = engine_settings_for(loaded, o.engine_keys);
-          for (const auto& e : plan.engines) make_engine(e)->settings().apply(settings);
-        } catch (const InputError& e) {
-          in.fail(node, where,
-                  fmt::format("at {} on case '{}': {}", text_of(a.axis.values[p]), cp.c.name,
-                              e.what()));
-        }
-      }
-    }
+    axis_lines.push_back(static_cast<int>((*root.get("axis")->as_array())[k].source().begin.line));
   }
+  check_axis_points(plan, set_assignments, axis_lines, quiet);
   return plan;
 }
 

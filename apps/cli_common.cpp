@@ -7,10 +7,13 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
+#include <limits>
 #include <memory>
 #include <toml++/toml.h>
 
@@ -244,6 +247,21 @@ void check_jobs(int jobs) {
     throw InputError("--jobs", 0, "",
                      fmt::format("must be an integer in [1, {}] (got '{}')", kMaxJobs, jobs));
   }
+}
+
+CLI::Option* check_unsigned_64_text(CLI::Option* option) {
+  return option->check(CLI::Validator(
+      [](const std::string& text) -> std::string {
+        std::uint64_t v = 0;
+        const char* end = text.data() + text.size();
+        const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+        if (text.empty() || ec != std::errc() || ptr != end) {
+          return fmt::format("must be an integer in [0, {}] (got {})",
+                             std::numeric_limits<std::uint64_t>::max(), echo_value(text));
+        }
+        return {};
+      },
+      "UINT64"));
 }
 
 void check_repeat(int repeat) {

@@ -13,6 +13,7 @@
 
 namespace CLI {
 class App;
+class Option;
 }  // namespace CLI
 
 namespace pb::cli {
@@ -42,6 +43,10 @@ struct Overrides {
 
 // --jobs in [1, kMaxJobs]
 void check_jobs(int jobs);
+// a whole decimal integer in [0, 2^64 - 1], checked on the text: CLI11 reads
+// "-1" into an unsigned as 2^64 - 1 and clamps 2^64 to it (issue 35 item 11)
+// Returns `option`.
+CLI::Option* check_unsigned_64_text(CLI::Option* option);
 // --repeat in [1, 100] (run and sweep)
 void check_repeat(int repeat);
 

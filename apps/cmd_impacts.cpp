@@ -430,7 +430,8 @@ Action add_impacts_command(CLI::App& app, int argc, char** argv) {
       ->default_val("all");
   fit->add_option("--out", opt->out, "Fit file to write (HDF5, written atomically)");
   fit->add_option("--folds", opt->folds, "Cross-validation folds, in [2, 20]")->default_val(5);
-  fit->add_option("--seed", opt->seed, "Seed of the fold split")->default_val(23);
+  check_unsigned_64_text(
+      fit->add_option("--seed", opt->seed, "Seed of the fold split, in [0, 2^64 - 1]")->default_val(23));
   fit->add_option("--max-evaluations", opt->max_evaluations,
                   "Objective evaluations per fit (each runs every impact fitted to)")
       ->default_val(40);

@@ -50,6 +50,13 @@ EngineModelSpec spec_of(const std::string& name) {
 
 std::vector<std::unique_ptr<ImpactModel>> impact_models(const std::string& engines, bool stored) {
   std::vector<std::string> chosen;
+  if (engines.empty()) {
+    // "" is no engine list: none must be said (issue 35 item 11)
+    throw InputError("--engine", 0, "",
+                     fmt::format("is empty: one of {}, all, none (the baselines only), or a "
+                                 "comma-separated list",
+                                 fmt::join(impact_engine_names(), ", ")));
+  }
   if (engines == "all") {
     chosen = impact_engine_names();
   } else if (engines != "none") {

@@ -215,3 +215,56 @@ engines = "ode"
 }
 
 }  // namespace
+
+// the message load_campaign refuses `text` with, or "(planned)"
+std::string refusal(const std::string& name, const std::string& text) {
+  try {
+    (void)pb::cli::load_campaign(write_campaign(name, text), "", true);
+  } catch (const pb::InputError& e) {
+    return e.what();
+  }
+  return "(planned)";
+}
+
+TEST(CampaignPlan, AxesThatChangeTheCaseAreCheckedTogether) {
+  // issue 35 item 11: each axis alone was fine, duration 0.001 with
+  // output_interval 0.01 planned, and `campaign run` then exited 2 naming
+  // neither the file nor the axes
+  const std::string head = R"(
+[campaign]
+cases = ["falling_ball"]
+engines = ["mujoco"]
+metrics = ["position_error_m"]
+)";
+  const std::string why = refusal("together.toml", head + R"(
+[[axis]]
+key = "duration"
+values = [0.5, 0.001]
+
+[[axis]]
+key = "output_interval"
+values = [1e-3, 0.01]
+)");
+  EXPECT_NE(why.find("together.toml:7: axis[0], axis[1]: the axes together: at duration = 0.001, "
+                     "output_interval = 0.01 on case 'falling_ball'"),
+            std::string::npos)
+      << why;
+  EXPECT_NE(why.find("must be <= duration"), std::string::npos) << why;
+  // the same axes with every combination valid plan
+  EXPECT_EQ(refusal("together_ok.toml", head + R"(
+[[axis]]
+key = "duration"
+values = [0.5, 0.1]
+
+[[axis]]
+key = "output_interval"
+values = [1e-3, 0.01]
+)"),
+            "(planned)");
+  // past kMaxCheckedCombinations the corners are checked: the bad pair is
+  // each axis's extreme (300 x 300 values)
+  std::string many = head + "\n[[axis]]\nkey = \"duration\"\nlinear = { from = 0.002, to = 1, points = 300 }\n"
+                            "\n[[axis]]\nkey = \"output_interval\"\nlinear = { from = 1e-3, to = 0.01, points = 300 }\n";
+  const std::string corner = refusal("corners.toml", many);
+  EXPECT_NE(corner.find("at duration = 0.002, output_interval = 0.01"), std::string::npos) << corner;
+}

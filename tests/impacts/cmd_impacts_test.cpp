@@ -356,6 +356,31 @@ TEST(CmdImpacts, BadInputIsRefusedNamingTheVariableAndLeavesNoFile) {
 // write_mat.py's own numpy implementation of the rigid law: an independent
 // writer and an independent law. The rigid baseline's fit must recover the
 // law's e and mu, and predict every impact: the two implementations agree.
+TEST(CmdImpacts, ASeedOutsideUint64OrAnEmptyEngineListIsRefused) {
+  // issue 35 item 11: --seed -1 and --seed 2^64 both became 2^64 - 1;
+  // --engine "" meant none
+  const fs::path dir = fresh_dir("seed_engine");
+  const fs::path train = impacts_file(dir, "train.mat", 1);
+  for (const char* seed : {"-1", "18446744073709551616", "1e3"}) {
+    const Finished f = run_planarbench({"impacts", "fit", "--data", train.string(), "--seed", seed,
+                                        "--out", (dir / "f.h5").string()});
+    EXPECT_EQ(f.exit.code, 2) << seed;
+    EXPECT_NE(f.err.find(fmt::format("--seed: must be an integer in [0, 18446744073709551615] (got '{}')", seed)),
+              std::string::npos)
+        << f.err;
+  }
+  const Finished e = run_planarbench({"impacts", "fit", "--data", train.string(), "--engine", "",
+                                      "--out", (dir / "f.h5").string()});
+  EXPECT_EQ(e.exit.code, 2);
+  EXPECT_NE(e.err.find("--engine: is empty"), std::string::npos) << e.err;
+  EXPECT_FALSE(fs::exists(dir / "f.h5"));
+  // the largest seed is a seed
+  const Finished top = run_planarbench({"impacts", "fit", "--data", train.string(), "--seed",
+                                        "18446744073709551615", "--engine", "none", "--folds", "2",
+                                        "--max-evaluations", "2", "-q", "--out", (dir / "f.h5").string()});
+  EXPECT_EQ(top.exit.code, 0) << top.err;
+}
+
 TEST(CmdImpacts, AMatV73FileIsRefusedInOneLine) {
   // issue 35 item 15: libmatio reads v7.3 through HDF5, whose failed calls
   // printed their error stack before the one-line refusal
