@@ -39,7 +39,7 @@ void report_run(const pb::Case& c, const pb::RunResult& r) {
   double worst = 0.0, t_worst = 0.0, ke = 0.0, available = 0.0;
   for (std::size_t k = 1; k < time.size(); ++k) {
     fill(k);
-    if (budget.update(states) <= worst) continue;
+    if (budget.update(states, time[k] - time[0]) <= worst) continue;
     worst = budget.ratio();
     t_worst = time[k];
     ke = budget.kinetic_now_j();

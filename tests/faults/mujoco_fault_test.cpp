@@ -140,6 +140,21 @@ TEST(MujocoFault, RunawayWithoutAWarningIsCaughtByTheEnergyCheck) {
   EXPECT_LT(r.diverged_at_s, 0.4965 + 5e-3);
 }
 
+// Issue 35 item 8: at mujoco.dt = 1e-2 (inside its range) block_stop's slab
+// (1 kg, 2 m/s along the ground: 2 J) and disk_throw's disk are thrown up
+// with energy from nowhere (386 J and 371 J at t = 0.88-0.9 s) and the runs
+// were ok: the check compared with 10 x an a-priori free-fall bound (56 J by
+// then), not with the energy the case had. Against the case's own budget
+// (energy_budget.hpp) both are runaways.
+TEST(MujocoFault, EnergyFromNowhereAtACoarseStepIsARunaway) {
+  for (const char* name : {"block_stop", "disk_throw"}) {
+    const RunResult r = faults_test::run_shipped(name, "mujoco", {{"dt", "1e-2"}});
+    ASSERT_EQ(r.status, RunStatus::diverged) << name << ": " << r.reason;
+    EXPECT_NE(r.reason.find("energy runaway"), std::string::npos) << r.reason;
+    EXPECT_NE(r.reason.find("the case has made available"), std::string::npos) << r.reason;
+  }
+}
+
 // Two 2000-point concave stars in contact would need one explicit <pair> per
 // two of their ~1400 convex pieces each: ~1.9e6 pairs, ~5.5 GB in MuJoCo's
 // compiler (issue 24). The run ends before MuJoCo allocates anything, naming

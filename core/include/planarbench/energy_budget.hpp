@@ -38,12 +38,14 @@ namespace pb {
 
 // The ratio KE / (energy made available) above which a run is a runaway.
 // Measured with every shipped case on every engine (tests/faults/README.md):
-// the default settings stay below 1 + 3e-8, coarse steps (dt up to 1e-2 s,
-// Box2D 0.1 s) and the other steppers below 1 + 4e-4; explicit force
-// injection with ~2 steps per impact gains energy at every impact (2.1 to
-// 5.2 after the dual pendulum's second impact); blow-ups reach 2e6 to 4e13.
-// 10 lies between the last two: above what a bounded run reaches, far below
-// a blow-up, which grows exponentially and passes 10 within a few steps.
+// the default settings stay below 1.52 (MuJoCo's soft contact returning a
+// disk set down at rest; every other run below 1 + 1e-9), coarse steps
+// (MuJoCo dt = 1e-2) reach 5.8 at their first step and stay bounded;
+// explicit force injection with ~2 steps per impact gains energy at every
+// impact (2.1 to 5.2 after the dual pendulum's second impact); blow-ups reach
+// 69 to 4e13. 10 lies between the last two: above what a bounded run reaches,
+// far below a blow-up, which grows exponentially and passes 10 within a few
+// steps.
 constexpr double kRunawayEnergyFactor = 10.0;
 
 // m/s: the budget never falls below the kinetic energy of every moving body
@@ -91,7 +93,22 @@ struct EnergyBound {
   }
 };
 
-// KE(t) against KE(0) + U_c(0) + max over s <= t of W_g(s).
+// KE(t) against KE(0) + U_c(0) + max over s <= t of W_g(s), the case's own
+// energy budget. W_g is known two ways, each exact where the other is not:
+//  - from positions, m g . (x(t) - x(0)): exact but for what the stored
+//    position cannot resolve (a float engine, Box2D, has not moved a body
+//    falling from 3 m after 1e-4 s: 4.9e-8 m is below a float's step there,
+//    2.4e-7 m; at dt = 1e-7 s its positions stay put for 0.12 s);
+//  - from velocities, int m g . v dt by the trapezoid rule over the samples,
+//    plus the most that rule can miss on an interval where v moves between
+//    its end values, m |g . (v1 - v0)| dt / 2: exact for a free fall (v
+//    linear in t), whatever the positions say.
+// The budget takes the larger, so neither produces a false runaway; both stay
+// with the energy the case has, so an engine that throws a body up with
+// energy from nowhere is caught (issue 35 item 8: MuJoCo at dt = 1e-2 threw
+// block_stop's slab 3.5 m up at 27.8 m/s, 386 J from the 2 J it had, and
+// the check then compared against 10 x an a-priori free-fall bound, 56 J at
+// t = 0.88 s, and let it pass).
 class EnergyBudget {
  public:
   // keeps a reference to `c`, which must outlive the budget
@@ -105,6 +122,9 @@ class EnergyBudget {
   // then; a contact without a penetration (NaN) stores no energy.
   void start(const std::vector<BodyState>& states, const std::vector<ContactSample>& contacts) {
     initial_.assign(states.begin(), states.end());
+    previous_.assign(states.begin(), states.end());
+    previous_s_ = 0.0;
+    velocity_work_j_ = 0.0;
     start_j_ = kinetic_j(states);
     for (const ContactSample& s : contacts) {
       if (!std::isfinite(s.penetration_m)) continue;
@@ -121,29 +141,25 @@ class EnergyBudget {
     ratio_ = 0.0;
   }
 
-  // Takes the state at a later time (start() first) and returns KE / the
-  // most energy made available so far; passive dynamics keep it <= 1.
-  double update(const std::vector<BodyState>& states) {
-    most_available_j_ = std::max(most_available_j_, start_j_ + gravity_work_j(states));
+  // Takes the state `elapsed_s` after start() and returns KE / the most
+  // energy made available so far; passive dynamics keep it <= 1.
+  double update(const std::vector<BodyState>& states, double elapsed_s) {
+    const double dt = std::max(elapsed_s - previous_s_, 0.0);
+    for (std::size_t i = 0; i < case_.bodies.size() && i < states.size(); ++i) {
+      const Body& b = case_.bodies[i];
+      if (b.fixed || i >= previous_.size()) continue;
+      const double p0 = b.mass_kg * case_.gravity_mps2.dot(previous_[i].velocity_mps);  // W
+      const double p1 = b.mass_kg * case_.gravity_mps2.dot(states[i].velocity_mps);     // W
+      // the trapezoid (p0 + p1) dt / 2 plus its allowance |p1 - p0| dt / 2
+      if (std::isfinite(p0) && std::isfinite(p1)) velocity_work_j_ += std::max(p0, p1) * dt;
+    }
+    previous_.assign(states.begin(), states.end());
+    previous_s_ = elapsed_s;
+    const double work_j = std::max(gravity_work_j(states), velocity_work_j_);
+    most_available_j_ = std::max(most_available_j_, start_j_ + work_j);
     kinetic_now_j_ = kinetic_j(states);
     ratio_ = kinetic_now_j_ / most_available_j_;
     return ratio_;
-  }
-
-  // The same, `elapsed_s` after start(), with the energy made available never
-  // below EnergyBound::kinetic_j(elapsed_s), which holds whatever the state:
-  // the work of gravity measured from positions alone misses what a float
-  // engine (Box2D) cannot resolve yet - a 1e-4 s fall moves a body 5e-8 m, below
-  // a float's step at 1 m (6e-8 m), while its speed g t is already exact.
-  double update(const std::vector<BodyState>& states, double elapsed_s) {
-    EnergyBound bound;
-    bound.initial_j = start_j_;
-    bound.gravity_mps2 = case_.gravity_mps2.norm();
-    for (const Body& b : case_.bodies) {
-      if (!b.fixed) bound.moving_mass_kg += b.mass_kg;
-    }
-    most_available_j_ = std::max(most_available_j_, bound.kinetic_j(std::max(elapsed_s, 0.0)));
-    return update(states);
   }
 
   // the last update() exceeded kRunawayEnergyFactor (false for NaN: the
@@ -194,6 +210,9 @@ class EnergyBudget {
  private:
   const Case& case_;
   std::vector<BodyState> initial_;
+  std::vector<BodyState> previous_;  // the state of the last update
+  double previous_s_ = 0.0;          // s, its time after start()
+  double velocity_work_j_ = 0.0;     // J, W_g from velocities (with its allowance)
   double floor_j_ = 0.0;           // J
   double start_j_ = 0.0;           // J, KE(0) + U_c(0)
   double most_available_j_ = 0.0;  // J

@@ -41,7 +41,10 @@ struct FoldFit {
 [[nodiscard]] FoldFit score_model(const ImpactModel& model, const ImpactTable& table,
                                   const std::vector<double>& parameters, int jobs);
 
+// a task file's JSON (fold_fit_json.cpp), and the fit alone (fold,
+// parameters, objective, evaluations, stop, wall time): a description's
 [[nodiscard]] nlohmann::ordered_json fold_fit_json(const FoldFit& f);
+[[nodiscard]] nlohmann::ordered_json fit_json(const FoldFit& f);
 [[nodiscard]] FoldFit fold_fit_from_json(const nlohmann::json& j);
 
 // What the table of a study records besides its fits.
