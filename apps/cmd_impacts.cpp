@@ -7,6 +7,7 @@
 #include <cmath>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -51,6 +52,10 @@ std::size_t parameter_count(const std::vector<std::unique_ptr<ImpactModel>>& mod
     if (m->name() == name) return m->parameters().size();
   }
   return 0;
+}
+
+bool has_model(const std::vector<std::unique_ptr<ImpactModel>>& models, const std::string& name) {
+  return std::any_of(models.begin(), models.end(), [&](const auto& m) { return m->name() == name; });
 }
 
 struct LoadedData {
@@ -290,31 +295,28 @@ int run_fit(const ImpactsOptions& opt) {
 int run_merge(const ImpactsOptions& opt) {
   check_output_file("--out", opt.out);
   check_work_spares_inputs(opt);
-  const nlohmann::json study = read_study(opt.work);
+  const StudyPins pins = read_study_pins(opt.work);  // study.json is input (issue 35)
   const LoadedData d = load_data(opt);
   ImpactsOptions o = opt;
-  std::vector<std::string> names;
-  std::string fitted_sha256;
-  // study.json is input (issue 35): its fields checked as the command line's
-  const std::string study_file = (fs::path(opt.work) / "study.json").string();
-  try {
-    fitted_sha256 = study.at("data_sha256").get<std::string>();
-    o.folds = study.at("folds").get<int>();
-    o.seed = study.at("seed").get<std::uint64_t>();
-    names = study.at("models").get<std::vector<std::string>>();
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(study_file, 0, "data_sha256, folds, seed, models",
-                     fmt::format("are not what `impacts fit --work` writes ({})", e.what()));
-  }
-  if (o.folds < 2 || o.folds > 20) {
-    throw InputError(study_file, 0, "folds", fmt::format("is {}: must be in [2, 20]", o.folds));
-  }
+  o.folds = pins.folds;
+  o.seed = pins.seed;
+  const std::vector<std::string>& names = pins.models;
+  const std::string& fitted_sha256 = pins.data_sha256;
   if (fitted_sha256 != d.set.sha256) {
     throw InputError(opt.data, 0, "--data",
                      fmt::format("has sha256 {}, but the shards in {} fitted a file of sha256 {}",
                                  d.set.sha256, opt.work, fitted_sha256));
   }
   const auto models = impact_models(engine_list(engines_among(names)), !d.set.models.empty());
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    if (!has_model(models, names[k])) {
+      std::vector<std::string> known;
+      for (const auto& m : models) known.push_back(m->name());
+      throw InputError((fs::path(opt.work) / "study.json").string(), 0, fmt::format("models[{}]", k),
+                       fmt::format("'{}' is no model of `impacts fit` on this file: one of {}",
+                                   names[k], fmt::join(known, ", ")));
+    }
+  }
   std::vector<FoldFit> fits;
   std::vector<std::string> missing;
   for (const ImpactTask& t : impact_tasks(names, o.folds)) {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -86,7 +87,56 @@ void prepare_work_folder(const fs::path& work, const nlohmann::ordered_json& stu
   }
 }
 
-nlohmann::json read_study(const fs::path& work) { return read_json(work / "study.json"); }
+StudyPins read_study_pins(const fs::path& work) {
+  const fs::path path = work / "study.json";
+  const nlohmann::json study = read_json(path);
+  const std::string file = path.string();
+  StudyPins pins;
+  try {
+    // integers as written, not converted: -1 would become 2^64 - 1, 2.5 would become 2
+    for (const char* key : {"folds", "seed"}) {
+      if (!study.at(key).is_number_unsigned()) {
+        throw InputError(file, 0, key,
+                         fmt::format("is {}: must be a non-negative integer", study.at(key).dump()));
+      }
+    }
+    pins.data_sha256 = study.at("data_sha256").get<std::string>();
+    const auto folds = study.at("folds").get<std::uint64_t>();
+    if (folds < 2 || folds > 20) {
+      throw InputError(file, 0, "folds", fmt::format("is {}: must be in [2, 20]", folds));
+    }
+    pins.folds = static_cast<int>(folds);
+    pins.seed = study.at("seed").get<std::uint64_t>();
+    pins.models = study.at("models").get<std::vector<std::string>>();
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(file, 0, "data_sha256, folds, seed, models",
+                     fmt::format("are not what `impacts fit --work` writes ({})", e.what()));
+  }
+  const auto hex = [](char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); };
+  if (pins.data_sha256.size() != 64 ||
+      !std::all_of(pins.data_sha256.begin(), pins.data_sha256.end(), hex)) {
+    throw InputError(file, 0, "data_sha256",
+                     fmt::format("is {}: must be 64 lowercase hex digits (a sha256)",
+                                 echo_value(pins.data_sha256)));
+  }
+  if (pins.models.empty() || pins.models.size() > kMaxStudyModels) {
+    throw InputError(file, 0, "models",
+                     fmt::format("has {} names: must have 1 to {}", pins.models.size(), kMaxStudyModels));
+  }
+  const auto name_char = [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_'; };
+  for (std::size_t k = 0; k < pins.models.size(); ++k) {
+    const std::string& m = pins.models[k];
+    if (m.empty() || m.size() > 64 || !std::all_of(m.begin(), m.end(), name_char)) {
+      throw InputError(file, 0, fmt::format("models[{}]", k),
+                       fmt::format("is {}: a model name is 1 to 64 of a-z, 0-9, _", echo_value(m)));
+    }
+    if (std::find(pins.models.begin(), pins.models.begin() + static_cast<std::ptrdiff_t>(k), m) !=
+        pins.models.begin() + static_cast<std::ptrdiff_t>(k)) {
+      throw InputError(file, 0, fmt::format("models[{}]", k), fmt::format("'{}' is given twice", m));
+    }
+  }
+  return pins;
+}
 
 bool task_done(const fs::path& work, const ImpactTask& t) {
   return fs::exists(work / "tasks" / t.file_name());
@@ -100,12 +150,28 @@ FoldFit read_task(const fs::path& work, const ImpactTask& t, std::size_t impacts
                   std::size_t parameters) {
   const fs::path path = work / "tasks" / t.file_name();
   try {
-    FoldFit f = fold_fit_from_json(read_json(path));
-    if (f.model != t.model || f.fold != t.fold) {
+    const nlohmann::json j = read_json(path);
+    // rows as written, not converted (-1 would read as 2^64 - 1)
+    if (j.is_object() && j.contains("predicted") && j.at("predicted").is_array()) {
+      const auto& p = j.at("predicted");
+      for (std::size_t k = 0; k < p.size(); ++k) {
+        if (!p[k].is_number_unsigned()) {
+          throw InputError(path.string(), 0, fmt::format("predicted[{}]", k),
+                           fmt::format("is {}: each must be a row of the study's table, [0, {}), "
+                                       "once",
+                                       p[k].dump(), impacts));
+        }
+      }
+    }
+    FoldFit f = fold_fit_from_json(j);
+    // the fold as written (2^32 + 1 would convert to 1)
+    const bool fold_as_written =
+        j.at("fold").is_number_integer() && j.at("fold").get<std::int64_t>() == f.fold;
+    if (f.model != t.model || f.fold != t.fold || !fold_as_written) {
       throw InputError(path.string(), 0, "model, fold",
                        fmt::format("are {} and {}; the file is named for {} (a task file moved or "
                                    "edited: run its shard again)",
-                                   f.model, f.fold, t.label()));
+                                   f.model, j.at("fold").dump(), t.label()));
     }
     std::vector<bool> seen(impacts, false);
     for (std::size_t k = 0; k < f.predicted.size(); ++k) {

@@ -9,6 +9,7 @@
 // a shard of another study refuses the folder.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -35,7 +36,19 @@ struct ImpactTask {
 // Makes WORK (and WORK/tasks) or checks that its study.json is `study`;
 // InputError naming the folder and the first field that differs.
 void prepare_work_folder(const std::filesystem::path& work, const nlohmann::ordered_json& study);
-[[nodiscard]] nlohmann::json read_study(const std::filesystem::path& work);
+
+// What WORK/study.json pins, checked as the command line's options are (it is
+// input, issue 35): folds in [2, 20], a seed, the data's sha256 (64 hex
+// digits), and 1 to kMaxStudyModels distinct model names of [a-z0-9_] (each
+// names task files: no path in it); InputError naming the file and the field.
+struct StudyPins {
+  std::string data_sha256;
+  int folds = 0;
+  std::uint64_t seed = 0;
+  std::vector<std::string> models;
+};
+inline constexpr std::size_t kMaxStudyModels = 64;
+[[nodiscard]] StudyPins read_study_pins(const std::filesystem::path& work);
 
 [[nodiscard]] bool task_done(const std::filesystem::path& work, const ImpactTask& t);
 void write_task(const std::filesystem::path& work, const ImpactTask& t, const FoldFit& f);

@@ -19,7 +19,7 @@ if ! [[ "$SECONDS_PER_TARGET" =~ ^[1-9][0-9]*$ ]]; then
   exit 2
 fi
 
-# build: the two fuzz targets and the libraries they link, nothing else
+# build: the fuzz targets and the libraries they link, nothing else
 bash scripts/setup.sh
 build_start=$(date +%s)
 cmake --preset fuzz >/dev/null
@@ -36,6 +36,8 @@ mkdir -p "$OUT"
 TARGETS=(
   "fuzz_case_parser|case_parser|-dict=tests/fuzz/fuzz_case_parser.dict -max_len=8192"
   "fuzz_outline|outline|"
+  "fuzz_impact_data|impact_data|-max_len=16384"
+  "fuzz_impact_work|impact_work|-max_len=16384"
 )
 
 failed=0

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "planarbench/errors.hpp"
 #include "report_campaign.hpp"
 #include "report_svg.hpp"
 
@@ -81,7 +82,9 @@ bool is_impacts_table(const CampaignTable& t) {
   return t.kind == "impacts_fit" || t.kind == "impacts_score";
 }
 
-ImpactsSection impacts_section(const CampaignTable& t, const std::string& file) {
+namespace {
+
+ImpactsSection section_of(const CampaignTable& t, const std::string& file) {
   ImpactsSection s;
   s.file = file;
   const Json& d = t.description;
@@ -237,6 +240,21 @@ ImpactsSection impacts_section(const CampaignTable& t, const std::string& file) 
     s.figures.push_back({std::string("impacts_predicted_") + c[0], plot.title, line_plot_svg(plot)});
   }
   return s;
+}
+
+}  // namespace
+
+ImpactsSection impacts_section(const CampaignTable& t, const std::string& file) {
+  // the description is input: a file edited or of another version names its
+  // field (issue 35 item 13: the report printed the raw JSON exception)
+  try {
+    return section_of(t, file);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(file, 0, "/campaign description",
+                     fmt::format("is not the description of a study of `planarbench impacts fit` "
+                                 "or `impacts score` ({})",
+                                 e.what()));
+  }
 }
 
 }  // namespace pb::internal

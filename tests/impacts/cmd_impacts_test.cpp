@@ -240,7 +240,15 @@ TEST(CmdImpacts, AStudyFileOutsideWhatFitWritesIsRefused) {
     const char* says;
   };
   for (const Bad& x : {Bad{"t[\"folds\"] = 1000000", "folds"}, Bad{"t[\"folds\"] = -5", "folds"},
-                       Bad{"t[\"folds\"] = \"two\"", "are not what `impacts fit --work` writes"}}) {
+                       Bad{"t[\"folds\"] = \"two\"", "folds: is \"two\": must be a non-negative integer"},
+                       Bad{"del t[\"seed\"]", "are not what `impacts fit --work` writes"},
+                       Bad{"t[\"seed\"] = -1", "seed: is -1: must be a non-negative integer"},
+                       // a model name names task files: no path in it (issue 35)
+                       Bad{"t[\"models\"][0] = \"../../x\"", "models[0]: is '../../x': a model name"},
+                       Bad{"t[\"models\"][1] = t[\"models\"][0]", "models[1]: '"},
+                       Bad{"t[\"models\"][0] = \"foo\"", "models[0]: 'foo' is no model of `impacts fit`"},
+                       Bad{"t[\"models\"] = []", "models: has 0 names"},
+                       Bad{"t[\"data_sha256\"] = \"abc\"", "data_sha256: is 'abc': must be 64 lowercase hex"}}) {
     ASSERT_EQ(rewrite_json(study, original, x.edit), 0) << x.edit;
     const fs::path out = dir / "m.h5";
     const Finished m = impacts(fmt::format("merge {} --data {} --out {} -q", work.string(),
@@ -296,8 +304,8 @@ TEST(CmdImpacts, AHeaderClaimingMoreThanTheFileHoldsIsRefused) {
     EXPECT_FALSE(fs::exists(out));
   }
   // issue 35 item 7: a compressed file cut short (its last 50 bytes gone)
-  // was read with zeros where its data ended; libmatio logs it, and the
-  // reader refuses the file with its words
+  // was read with zeros where its data ended; the structure walked before
+  // libmatio reads (mat_preflight.hpp) finds its last element short
   const fs::path whole = impacts_file(dir, "whole.mat", 4);
   const std::string bytes = file_bytes(whole);
   const fs::path cut = dir / "cut.mat";
@@ -305,7 +313,8 @@ TEST(CmdImpacts, AHeaderClaimingMoreThanTheFileHoldsIsRefused) {
   const Finished f = impacts(fmt::format("fit --data {} --engine none --out {} -q", cut.string(),
                                          (dir / "cut.h5").string()));
   EXPECT_EQ(f.exit.code, 2) << f.err;
-  EXPECT_NE(f.err.find("truncated or damaged (libmatio: "), std::string::npos) << f.err;
+  EXPECT_NE(f.err.find("--data: is truncated or damaged: at byte 128: an element claims"), std::string::npos)
+      << f.err;
   EXPECT_FALSE(fs::exists(dir / "cut.h5"));
 }
 
@@ -444,4 +453,30 @@ TEST(CmdImpacts, TheReportHasAMeasuredImpactsSection) {
   EXPECT_TRUE(fs::exists(dir / "report" / "figures" / "impacts_predicted_w.svg"));
   const std::string html = file_bytes(dir / "report" / "report.html");
   EXPECT_NE(html.find("impacts_models"), std::string::npos);
+}
+
+TEST(CmdImpacts, AReportOfADamagedDescriptionNamesTheField) {
+  // issue 35 item 13: `report` of a fit file whose description is not a
+  // fit's printed the raw JSON exception
+  const fs::path dir = fresh_dir("report_damaged");
+  const fs::path train = impacts_file(dir, "train.mat", 1);
+  ASSERT_EQ(impacts("fit --data " + train.string() + " --out " + (dir / "fit.h5").string() + " " + kQuick).exit.code, 0);
+  for (const char* description : {"[]", "{\"data\": 5}"}) {
+    const Finished edit = run_shell(fmt::format(
+        "{} -c 'import h5py, sys\nwith h5py.File(sys.argv[1], \"r+\") as f: "
+        "f[\"campaign\"].attrs[\"description\"] = sys.argv[2]' {} '{}'",
+        PB_PYTHON, (dir / "fit.h5").string(), description));
+    ASSERT_EQ(edit.exit.code, 0) << edit.err;
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"report", (dir / "fit.h5").string(), "--out", (dir / "report").string()},
+          std::vector<std::string>{"report", "--impacts", (dir / "fit.h5").string(), (dir / "fit.h5").string(),
+                                   "--out", (dir / "report").string()}}) {
+      const Finished r = run_planarbench(args);
+      EXPECT_EQ(r.exit.code, 2) << description << ": " << r.err;
+      EXPECT_NE(r.err.find("fit.h5: /campaign description: is not the description of a study"),
+                std::string::npos)
+          << r.err;
+      EXPECT_FALSE(fs::exists(dir / "report"));
+    }
+  }
 }

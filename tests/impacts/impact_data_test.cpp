@@ -5,8 +5,10 @@
 // (tests/impacts/read_mat.py), an independent reader.
 #include <gtest/gtest.h>
 #include <matio.h>
+#include <zlib.h>
 
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +16,7 @@
 
 #include "planarbench/errors.hpp"
 #include "planarbench/impacts/impact_data.hpp"
+#include "planarbench/impacts/mat_preflight.hpp"
 #include "synthetic_impacts.hpp"
 
 namespace fs = std::filesystem;
@@ -256,4 +259,120 @@ TEST(ImpactData, AnImpactThatChangesNothingIsRefused) {
   EXPECT_NE(why.find("data.states_f: row 1: the velocities after the impact equal those before"),
             std::string::npos)
       << why;
+}
+
+// ---- mat_preflight.cpp: a MAT v5 file's structure walked before libmatio ----
+namespace {
+
+// MAT v5 bytes (little-endian), written here apart from any MAT library
+struct MatWriter {
+  std::string bytes = [] {
+    std::string h = "MATLAB 5.0 MAT-file, written by impact_data_test";
+    h.resize(116, ' ');
+    h += std::string(8, '\0');
+    h += std::string("\x00\x01", 2) + "IM";
+    return h;
+  }();
+  static std::string u32(std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); }
+  // an element: tag, data, padding to 8 bytes (`claimed` overrides the count)
+  static std::string element(std::uint32_t type, const std::string& data, std::int64_t claimed = -1) {
+    std::string e;
+    e.append(u32(type));
+    e.append(u32(static_cast<std::uint32_t>(claimed < 0 ? static_cast<std::int64_t>(data.size()) : claimed)));
+    e.append(data);
+    e.append((8 - e.size() % 8) % 8, '\0');
+    return e;
+  }
+  // a matrix's header: flags, dimensions, name
+  static std::string header(int cls, const std::vector<std::int32_t>& dims, const std::string& name) {
+    std::string d;
+    for (const auto k : dims) d.append(u32(static_cast<std::uint32_t>(k)));
+    std::string flags = u32(static_cast<std::uint32_t>(cls));
+    flags.append(u32(0));
+    std::string out = element(6, flags);
+    out.append(element(5, d));
+    out.append(element(1, name));
+    return out;
+  }
+};
+
+std::string struct_of(std::size_t fields, std::int64_t claimed_names = -1) {
+  std::string names;
+  for (std::size_t f = 0; f < fields; ++f) {
+    // "f<number>", NUL-padded to 8 bytes
+    char n[8] = {};
+    std::snprintf(n, sizeof n, "f%zu", f);
+    names.append(n, sizeof n);
+  }
+  std::string body = MatWriter::header(2, {1, 1}, "data");
+  body.append(MatWriter::element(5, MatWriter::u32(8)));
+  body.append(MatWriter::element(1, names, claimed_names));
+  for (std::size_t f = 0; f < fields; ++f) body.append(MatWriter::element(14, ""));
+  return MatWriter::element(14, body);
+}
+
+}  // namespace
+
+TEST(MatPreflight, AStructOfTooManyFieldsIsRefusedBeforeLibmatioAllocates) {
+  // found by fuzz_impact_data: a field-name element claiming 4.7e8 names made
+  // Mat_VarReadInfo allocate 7.5 GB
+  MatWriter ok;
+  ok.bytes += struct_of(5);
+  EXPECT_EQ(pb::mat_v5_problem(ok.bytes).what, "");
+  MatWriter many;
+  many.bytes += struct_of(65);
+  const pb::MatProblem p = pb::mat_v5_problem(many.bytes);
+  EXPECT_EQ(p.variable, "data");
+  EXPECT_NE(p.what.find("claims a struct of 1 x 1 elements of 65 fields: at most 64 fields"),
+            std::string::npos)
+      << p.what;
+  MatWriter claims;
+  claims.bytes += struct_of(2, 4000000000LL);
+  const pb::MatProblem c = pb::mat_v5_problem(claims.bytes);
+  EXPECT_NE(c.what.find("is truncated or damaged: at byte 200: an element claims 4000000000 bytes"),
+            std::string::npos)
+      << c.what;
+}
+
+TEST(MatPreflight, AMatrixOfMoreValuesThanAFileOfImpactsHoldsIsRefused) {
+  MatWriter w;
+  w.bytes += MatWriter::element(14, MatWriter::header(6, {10000000, 6}, "v_models"));
+  const pb::MatProblem p = pb::mat_v5_problem(w.bytes);
+  EXPECT_EQ(p.variable, "v_models");
+  EXPECT_NE(p.what.find("claims 10000000 x 6 values: a file holds at most 100000 impacts"),
+            std::string::npos)
+      << p.what;
+}
+
+TEST(MatPreflight, ACompressedVariableInflatingPastTheCapIsRefused) {
+  // 70 MB of zeros deflate to ~70 kB: inflated in 64 kB pieces, stopped at 64 MB
+  const std::string zeros(70u << 20, '\0');
+  uLongf size = compressBound(static_cast<uLong>(zeros.size()));
+  std::string z(size, '\0');
+  ASSERT_EQ(compress(reinterpret_cast<Bytef*>(z.data()), &size,
+                     reinterpret_cast<const Bytef*>(zeros.data()), static_cast<uLong>(zeros.size())),
+            Z_OK);
+  z.resize(size);
+  MatWriter w;
+  w.bytes.append(MatWriter::u32(15));
+  w.bytes.append(MatWriter::u32(static_cast<std::uint32_t>(z.size())));
+  w.bytes.append(z);
+  const pb::MatProblem p = pb::mat_v5_problem(w.bytes);
+  EXPECT_NE(p.what.find("a compressed variable inflates past 64 MB"), std::string::npos) << p.what;
+}
+
+TEST(MatPreflight, NestingPastTheLimitIsRefused) {
+  std::string leaf = MatWriter::header(6, {1, 1}, "");
+  leaf.append(MatWriter::element(9, std::string(8, '\0')));
+  std::string inner = MatWriter::element(14, leaf);
+  for (int k = 0; k < 12; ++k) {
+    std::string cell = MatWriter::header(1, {1, 1}, k == 11 ? "data" : "");
+    cell.append(inner);
+    inner = MatWriter::element(14, cell);
+  }
+  MatWriter w;
+  w.bytes += inner;
+  const pb::MatProblem p = pb::mat_v5_problem(w.bytes);
+  EXPECT_NE(p.what.find("is nested past 8 levels"), std::string::npos) << p.what;
+  EXPECT_EQ(p.variable.rfind("data{1}", 0), 0u) << p.variable;
 }

@@ -14,6 +14,7 @@
 #include "internal/hdf5_handle.hpp"
 #include "internal/hdf5_sha256.hpp"
 #include "planarbench/errors.hpp"
+#include "planarbench/impacts/mat_preflight.hpp"
 
 namespace pb {
 
@@ -163,11 +164,20 @@ std::vector<std::array<double, N>> rows_of(const std::vector<double>& col_major,
   return out;
 }
 
-std::string file_sha256(const std::filesystem::path& path) {
+// the file's bytes, refused past kMaxMatFileBytes before they are read
+std::string file_bytes(const std::string& path) {
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) refuse(path, "--data", "is not a readable file (" + ec.message() + ")");
+  if (size > kMaxMatFileBytes) {
+    refuse(path, "--data",
+           fmt::format("has {} bytes: a file of impacts has at most {} MB (1e5 impacts take 30 MB)",
+                       size, kMaxMatFileBytes >> 20));
+  }
   std::ifstream in(path, std::ios::binary);
   std::ostringstream bytes;
   bytes << in.rdbuf();
-  return internal::sha256_hex(bytes.str());
+  return bytes.str();
 }
 
 // what libmatio logs while a file is read (its errors and warnings: a
@@ -240,6 +250,11 @@ ImpactSet read_impacts(const std::filesystem::path& path) {
   const std::string p = path.string();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) refuse(p, "--data", "is not a readable file");
+  const std::string bytes = file_bytes(p);
+  // the structure libmatio would allocate by, checked first (mat_preflight.hpp)
+  if (const MatProblem problem = mat_v5_problem(bytes); !problem.what.empty()) {
+    refuse(p, problem.variable.empty() ? "--data" : problem.variable, problem.what);
+  }
   std::string matio_log;
   const MatioLogScope log_scope(matio_log);
   // libmatio reads MAT v7.3 through HDF5, whose failed calls print their
@@ -247,10 +262,9 @@ ImpactSet read_impacts(const std::filesystem::path& path) {
   const internal::QuietHdf5 quiet;
   MatFile mat(Mat_Open(p.c_str(), MAT_ACC_RDONLY));
   if (!mat) refuse(p, "--data", "is not a MAT file libmatio can read (MAT v5 or v7.3 expected)");
-  const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
   for (const char* name : {"data", "v_models"}) {
     MatVar info(Mat_VarReadInfo(mat.get(), name));
-    check_struct_claims(p, name, info.get(), bytes);
+    check_struct_claims(p, name, info.get(), bytes.size());
   }
   MatVar data(Mat_VarRead(mat.get(), "data"));
   if (!data || data->class_type != MAT_C_STRUCT) {
@@ -274,7 +288,7 @@ ImpactSet read_impacts(const std::filesystem::path& path) {
     refuse(p, "--data", "is truncated or damaged (libmatio: " + matio_log + ")");
   }
   check_states(set);
-  set.sha256 = file_sha256(path);
+  set.sha256 = internal::sha256_hex(bytes);
   return set;
 }
 
