@@ -151,7 +151,7 @@ TEST(ImpactData, AFileOfAnotherLayoutIsRefusedNamingTheVariable) {
   const fs::path dir = work_dir();
   // not a MAT file at all
   std::ofstream(dir / "text.mat") << "hello\n";
-  EXPECT_NE(refusal(dir / "text.mat").find("is not a MAT file"), std::string::npos) << refusal(dir / "text.mat");
+  EXPECT_NE(refusal(dir / "text.mat").find("--data: is not a MAT v5 file (no MATLAB 5.0 header)"), std::string::npos) << refusal(dir / "text.mat");
   // no such file
   EXPECT_NE(refusal(dir / "missing.mat").find("is not a readable file"), std::string::npos);
   // states_i with 5 columns

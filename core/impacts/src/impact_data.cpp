@@ -11,7 +11,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include "internal/hdf5_handle.hpp"
 #include "internal/hdf5_sha256.hpp"
 #include "planarbench/errors.hpp"
 #include "planarbench/impacts/mat_preflight.hpp"
@@ -228,6 +227,20 @@ void check_claim(const std::string& path, const std::string& name, const matvar_
   }
 }
 
+// a struct of exactly one element: libmatio 1.5.23's Mat_VarGetStructFieldByIndex
+// reads through a null pointer for a struct of 0 elements (1 x 0), found by
+// tests/fuzz/fuzz_impact_data.cpp
+void require_one_struct(const std::string& path, const std::string& name, const matvar_t* v) {
+  std::size_t elements = v->rank > 0 && v->dims != nullptr ? 1 : 0;
+  for (int k = 0; k < v->rank && v->dims != nullptr; ++k) elements *= v->dims[k];
+  if (elements != 1) {
+    refuse(path, name,
+           fmt::format("must be a 1 x 1 struct (got {}): one struct of states_i, states_f, n, d, "
+                       "drop",
+                       shape_of(v)));
+  }
+}
+
 // every field of a struct variable's header (check_claim)
 void check_struct_claims(const std::string& path, const std::string& name, matvar_t* v,
                          std::uintmax_t file_bytes) {
@@ -236,6 +249,7 @@ void check_struct_claims(const std::string& path, const std::string& name, matva
     check_claim(path, name, v, file_bytes);
     return;
   }
+  require_one_struct(path, name, v);
   const unsigned fields = Mat_VarGetNumberOfFields(v);
   char* const* names = Mat_VarGetStructFieldnames(v);
   for (unsigned f = 0; f < fields; ++f) {
@@ -257,11 +271,8 @@ ImpactSet read_impacts(const std::filesystem::path& path) {
   }
   std::string matio_log;
   const MatioLogScope log_scope(matio_log);
-  // libmatio reads MAT v7.3 through HDF5, whose failed calls print their
-  // error stack (26 lines, issue 35 item 15); the refusal below says it once
-  const internal::QuietHdf5 quiet;
   MatFile mat(Mat_Open(p.c_str(), MAT_ACC_RDONLY));
-  if (!mat) refuse(p, "--data", "is not a MAT file libmatio can read (MAT v5 or v7.3 expected)");
+  if (!mat) refuse(p, "--data", "is not a MAT v5 file libmatio can read");
   for (const char* name : {"data", "v_models"}) {
     MatVar info(Mat_VarReadInfo(mat.get(), name));
     check_struct_claims(p, name, info.get(), bytes.size());
@@ -270,6 +281,7 @@ ImpactSet read_impacts(const std::filesystem::path& path) {
   if (!data || data->class_type != MAT_C_STRUCT) {
     refuse(p, "data", "missing or not a struct: data (states_i, states_f, n, d, drop) expected");
   }
+  require_one_struct(p, "data", data.get());
   matvar_t* states_i = Mat_VarGetStructFieldByName(data.get(), "states_i", 0);
   const std::size_t n = impact_count(p, states_i);
   ImpactSet set;

@@ -243,14 +243,21 @@ class Walker {
 }  // namespace
 
 MatProblem mat_v5_problem(std::string_view bytes) {
-  if (bytes.size() < 128) return {};  // no MAT v5 header: libmatio decides
+  const MatProblem not_v5{
+      "", "is not a MAT v5 file (no MATLAB 5.0 header): a file of impacts is MAT v5 "
+          "(scipy.io.savemat; MATLAB save -v7; Octave save -7)"};
+  if (bytes.size() < 128) return not_v5;
   const bool little = bytes[126] == 'I' && bytes[127] == 'M';
   const bool swapped = bytes[126] == 'M' && bytes[127] == 'I';
-  if (!little && !swapped) return {};
+  if (!little && !swapped) return not_v5;
   std::uint16_t version = 0;
   std::memcpy(&version, bytes.data() + 124, 2);
   if (swapped) version = static_cast<std::uint16_t>((version >> 8) | (version << 8));
-  if (version != 0x0100) return {};  // 0x0200: MAT v7.3, HDF5's
+  if (version == 0x0200) {
+    return {"", "is a MAT v7.3 file (HDF5): a file of impacts is MAT v5 (MATLAB save -v7; "
+                "scipy.io.savemat)"};
+  }
+  if (version != 0x0100) return not_v5;
   try {
     Walker(swapped).elements(bytes.substr(128), 128, "at", 0);
   } catch (const Problem& p) {
