@@ -65,6 +65,7 @@ struct PairSample {
   double speed_mps = kNaN;      // m/s, normal approach speed (> 0 approaching)
   double force_n = 0.0;         // N, reported at this time (engine: the last step's)
   double step_force_n = 0.0;    // N, mean force over the step that ended here
+  double tangential_force_n = 0.0;  // N, on body_b along t, mean over that step (issue 32)
   Vec2 normal = Vec2::Zero();   // from body_a to body_b
   Vec2 point_m = Vec2::Zero();
 };
@@ -481,7 +482,10 @@ void Box2dEngine::advance_to(double t_s) {
 void Box2dEngine::step() {
   const float dt = static_cast<float>(settings_.dt_s);
   if (!collide_) apply_injected_forces();  // inject mode (collide_ caches !inject())
-  for (auto& st : pair_states_) st.step_impulse_ns = 0.0;
+  for (auto& st : pair_states_) {
+    st.step_impulse_ns = 0.0;
+    st.step_tangent_impulse_ns = 0.0;
+  }
   world_->Step(dt, settings_.velocity_iterations, settings_.position_iterations);
   ++t_world_steps;
   ++steps_;
@@ -618,6 +622,7 @@ void Box2dEngine::sample_engine_pair(std::size_t k) {
     s.valid = broad_phase_pair(a, b);
     s.step_force_n = 0.0;
     s.force_n = 0.0;
+    s.tangential_force_n = 0.0;
     s.penetration_m = s.valid ? -lower_bound : kNaN;
     s.tracked_m = s.penetration_m;
     s.speed_mps = kNaN;
@@ -630,6 +635,7 @@ void Box2dEngine::sample_engine_pair(std::size_t k) {
   s.valid = g.valid;
   s.step_force_n = impulse / settings_.dt_s;
   s.force_n = s.step_force_n;
+  s.tangential_force_n = pair_states_[k].step_tangent_impulse_ns / settings_.dt_s;
   if (g.valid) {
     s.penetration_m = g.penetration_m;
     s.normal = g.normal;
@@ -732,6 +738,7 @@ void Box2dEngine::contacts(std::vector<ContactSample>& out) const {
     cs.body_a = p.body_a;
     cs.body_b = p.body_b;
     cs.force_n = s.force_n;
+    cs.tangential_force_n = s.tangential_force_n;
     cs.penetration_m = std::max(0.0, s.penetration_m);
     cs.normal = s.normal;
     cs.point_m = s.point_m;

@@ -167,8 +167,13 @@ void PairContactListener::PostSolve(b2Contact* contact, const b2ContactImpulse* 
       pairs_.pair(body_index(*contact->GetFixtureA()), body_index(*contact->GetFixtureB()));
   if (k < 0) return;
   double sum = 0.0;
-  for (int i = 0; i < impulse->count; ++i) sum += static_cast<double>(impulse->normalImpulses[i]);
+  double tangent = 0.0;
+  for (int i = 0; i < impulse->count; ++i) {
+    sum += static_cast<double>(impulse->normalImpulses[i]);
+    tangent += static_cast<double>(impulse->tangentImpulses[i]);
+  }
   states_[static_cast<std::size_t>(k)].step_impulse_ns += sum;
+  states_[static_cast<std::size_t>(k)].step_tangent_impulse_ns -= tangent;
 }
 
 }  // namespace pb::internal::box2d

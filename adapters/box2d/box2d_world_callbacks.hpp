@@ -50,6 +50,11 @@ struct PairState {
   float friction = 0.0f;       // the pair's Coulomb coefficient (SPEC §7), set per contact
   double step_impulse_ns =
       0.0;  // N s, normal impulses of the current step (all points, TOI included)
+  // N s, the step's tangent impulses on the case's body_b along t = n rotated
+  // by +90 deg (issue 32): Box2D's tangent is b2Cross(normal, 1) = (n.y, -n.x)
+  // for its normal from fixture A to B, its impulse acts on B; whichever
+  // fixture is body_b, that is minus the sum of tangentImpulses
+  double step_tangent_impulse_ns = 0.0;
 };
 
 // the restitution a pair's contacts took at an onset (one per pair and step)

@@ -668,6 +668,7 @@ void MujocoEngine::contacts(std::vector<ContactSample>& out) const {
     s.penetration_m = o.penetration_m;
     s.normal = o.normal_ab;
     s.point_m = o.point_m;
+    s.tangential_force_n = o.tangential_force_n;
     out.push_back(s);
   }
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "mujoco_frame.hpp"
+#include "planarbench/engine.hpp"
 
 namespace pb::internal::mujoco {
 
@@ -82,6 +83,14 @@ void observe_pairs(const mjModel* m, const mjData* d, const ModelLayout& layout,
       mjtNum f[6];
       mj_contactForce(m, d, i, f);
       o.force_n += f[0];  // contact frame: f[0] is the normal force, >= 0
+      // the force on geom2 (the frame's rows: normal from geom1 to geom2,
+      // then the two tangents), onto the case's body_b
+      double world[3];
+      for (int j = 0; j < 3; ++j) {
+        world[j] = f[0] * con.frame[j] + f[1] * con.frame[3 + j] + f[2] * con.frame[6 + j];
+      }
+      const double on_b = layout.on_body_a(con.geom1, k) ? 1.0 : -1.0;
+      o.force_on_b_n += on_b * from_mj(world);
     }
     if (o.reported && -con.dist <= o.penetration_m) continue;
     o.reported = true;
@@ -99,6 +108,7 @@ void observe_pairs(const mjModel* m, const mjData* d, const ModelLayout& layout,
     Vec2 n = sign * from_mj(con.frame);
     n.normalize();
     o.normal_ab = n;
+    if (with_force) o.tangential_force_n = o.force_on_b_n.dot(pb::contact_tangent(n));
     o.point_m = from_mj(con.pos);
     if (o.pressed > 1) {
       // SPEC §1, one force per pair: several contacts pressed in act at their

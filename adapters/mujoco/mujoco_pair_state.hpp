@@ -3,6 +3,8 @@
 // MuJoCo's normal force; and the effective mass along a contact normal.
 #pragma once
 
+#include <limits>
+
 #include <mujoco/mujoco.h>
 
 #include <vector>
@@ -31,6 +33,10 @@ struct PairObservation {
   Vec2 point_m = Vec2::Zero();
   double approach_speed_mps = 0.0;  // m/s, (v_a - v_b) . n_ab at the point, > 0 approaching
   double force_n = 0.0;  // N, MuJoCo's normal force summed over the pair's active contacts
+  // N, the whole contact force on body_b summed over them (case frame), and
+  // its part along t = n rotated by +90 deg (NaN without forces); issue 32
+  Vec2 force_on_b_n = Vec2::Zero();
+  double tangential_force_n = std::numeric_limits<double>::quiet_NaN();
   int contacts = 0;      // contacts MuJoCo reported for the pair
   int pressed = 0;       // of them, with dist < 0 (in the constraint)
 };

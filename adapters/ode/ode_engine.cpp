@@ -431,6 +431,11 @@ void OdeEngine::step_once() {
   if (!inject_) {
     for (std::size_t p = 0; p < pairs; ++p) {
       double f = 0.0;  // N
+      double ft = 0.0;  // N, on body_b along t
+      // f1 acts on g1's body: body_a's when a moves, else body_b's
+      // (ode_pair_contact.cpp); the joint's force on b is then -f1 or f1
+      const double on_b = world_->body(case_.contacts[p].body_a) != nullptr ? -1.0 : 1.0;
+      const Vec2 t = contact_tangent(now_[p].normal_ab);
       for (int i = 0; i < joints_made_[p]; ++i) {
         const std::size_t row = p * feedback_per_pair_ + static_cast<std::size_t>(i);
         const dJointFeedback& fb = feedback_[row];
@@ -438,8 +443,10 @@ void OdeEngine::step_once() {
         const dReal* n = now_[p].geoms[static_cast<std::size_t>(k)].normal;
         // the row's force and, with friction, its explicit damping (add_native_joints)
         f += std::max(0.0, fb.f1[0] * n[0] + fb.f1[1] * n[1] + fb.f1[2] * n[2] + explicit_n_[row]);
+        ft += on_b * (fb.f1[0] * t.x() + fb.f1[1] * t.y());
       }
       track_[p].force_n = f;
+      track_[p].tangential_force_n = ft;
     }
     dJointGroupEmpty(world_->contact_group());
   }
@@ -524,6 +531,7 @@ void OdeEngine::contacts(std::vector<ContactSample>& out) const {
     s.body_a = case_.contacts[p].body_a;
     s.body_b = case_.contacts[p].body_b;
     s.force_n = track_[p].force_n;
+    s.tangential_force_n = track_[p].tangential_force_n;
     s.penetration_m = pc.depth_m;
     s.normal = pc.normal_ab;
     s.point_m = pc.point_m;

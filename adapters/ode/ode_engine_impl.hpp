@@ -31,6 +31,10 @@ inline bool is_plain_kelvin_voigt(const ContactLaw& law) {
 // one contact pair's state between samples
 struct PairTrack {
   double force_n = 0.0;               // N, normal force of the current sample
+  // N, the joints' force on body_b along t = n rotated by +90 deg over the
+  // step that ended now (native, oracle; 0 in inject mode, which has no
+  // friction); issue 32
+  double tangential_force_n = 0.0;
   double latched_approach_mps = 0.0;  // m/s, delta_dot at onset (eq. 7's delta_dot^-)
   bool in_contact = false;            // penetration > 0 at the current sample
   double depth_m = 0.0;               // m, at the current sample

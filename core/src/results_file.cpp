@@ -502,6 +502,8 @@ RunResult read_run(hid_t case_group, const std::string& case_name, const std::st
     c.sample.penetration_m = row.penetration_m;
     c.sample.normal = Vec2(row.normal[0], row.normal[1]);
     c.sample.point_m = Vec2(row.point_m[0], row.point_m[1]);
+    c.sample.tangential_force_n = row.tangential_force_n;
+    c.sample.slip_mps = row.slip_mps;
     r.contacts.push_back(c);
   }
 

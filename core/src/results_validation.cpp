@@ -135,6 +135,7 @@ void check_table_fields(hid_t file_type, const TableLayout& layout, const std::s
     const int index = H5Tget_member_index(file_type, f.name);
     if (index < 0) {
       hdf5_last_error();
+      if (f.optional) continue;  // a file written before the column: NaN (read_table)
       throw Hdf5Error(object, std::string("field '") + f.name + "' is missing");
     }
     Hid member = owned_type(H5Tget_member_type(file_type, static_cast<unsigned>(index)), object,

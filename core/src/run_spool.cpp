@@ -131,7 +131,7 @@ RunSpool::RunSpool(const std::filesystem::path& dir, std::vector<std::string> bo
     : data_(std::make_unique<internal::RunSpoolData>(dir)) {
   // the table's rows are packed records: the file's compound type is the
   // record byte for byte (no padding), which results_file.cpp checks
-  static_assert(sizeof(internal::ContactRecord) == 8 + 2 * internal::kNameBytes + 8 * 6);
+  static_assert(sizeof(internal::ContactRecord) == 8 + 2 * internal::kNameBytes + 8 * 8);
   data_->body_names = std::move(body_names);
   for (const int i : moving) {
     internal::BodySpool b;

@@ -8,6 +8,7 @@
 #include <new>
 #include <numbers>
 
+#include "planarbench/contact_slip.hpp"
 #include "planarbench/energy_budget.hpp"
 #include "planarbench/half_plane_guard.hpp"
 #include "planarbench/errors.hpp"
@@ -99,6 +100,7 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
   int dense_left = 0;         // output intervals still to sample densely
   bool had_contacts = false;  // the previous grid sample had a contact
   std::vector<ContactSample> sub_contacts;
+  std::vector<BodyState> sub_states;
   auto record_contacts = [&](double t, const std::vector<ContactSample>& cs_list) {
     for (const auto& cs : cs_list) {
       if (spool) {
@@ -130,6 +132,8 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
           if (!(te > t_last) || te >= t1 - 1e-9 * (t1 - t0)) continue;
           t_last = te;
           engine.contacts(sub_contacts);
+          engine.body_states(sub_states);
+          fill_slip(c, sub_states, sub_contacts);
           record_contacts(te, sub_contacts);
         }
       }
@@ -144,6 +148,7 @@ RunResult run_engine(Engine& engine, const Case& c, const SettingsOverrides& eng
         }
       }
       engine.contacts(contacts);
+      fill_slip(c, states, contacts);
       if (k == 0) {
         energy.start(states, contacts);
         energy_start_s = t;

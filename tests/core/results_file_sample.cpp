@@ -45,7 +45,8 @@ pb::ResultsFile sample() {
   for (int i = 0; i < 3; ++i) {
     pb::ContactRow c;
     c.time_s = 0.45 + 1e-3 * i;
-    c.sample = {0, 1, 100.0 * i, 1e-5 * i, pb::Vec2(0.0, 1.0), pb::Vec2(0.0, -5e-6 * i)};
+    c.sample = {0, 1, 100.0 * i, 1e-5 * i, pb::Vec2(0.0, 1.0), pb::Vec2(0.0, -5e-6 * i),
+                -30.0 * i, 0.01 * i};
     ok.contacts.push_back(c);
   }
   ok.events.push_back({0, 1, 0.449, 0.4712, 1.98, 1.5, 1.5 / 1.98, 1234.5, 0.35, 1e-4});

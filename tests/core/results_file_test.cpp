@@ -55,6 +55,8 @@ ContactRow contact(double t, int a, int b, double force, double pen) {
   c.sample.penetration_m = pen;
   c.sample.normal = Vec2(0.6, -0.8);
   c.sample.point_m = Vec2(1.0 / 3.0, -2.5e-7);
+  c.sample.tangential_force_n = -0.3 * force;
+  c.sample.slip_mps = 1.0 / 7.0 + t;
   return c;
 }
 
@@ -208,6 +210,8 @@ void expect_same(const RunResult& a, const RunResult& b) {
     EXPECT_EQ(x.sample.body_b, y.sample.body_b);
     EXPECT_SAME_DOUBLE(x.sample.force_n, y.sample.force_n);
     EXPECT_SAME_DOUBLE(x.sample.penetration_m, y.sample.penetration_m);
+    EXPECT_SAME_DOUBLE(x.sample.tangential_force_n, y.sample.tangential_force_n);
+    EXPECT_SAME_DOUBLE(x.sample.slip_mps, y.sample.slip_mps);
     expect_same({x.sample.normal, x.sample.point_m}, {y.sample.normal, y.sample.point_m},
                 "normal, point");
   }
@@ -378,6 +382,49 @@ TEST_F(ResultsFileTest, LayoutAsSpecified) {
   EXPECT_EQ(nf, 2);
   EXPECT_EQ(layout("/runs/falling_ball/reference/bodies/ball/time", &nf), H5D_CONTIGUOUS);
   EXPECT_EQ(nf, 0);
+}
+
+// A file written before the contacts table had its friction columns (issue 32)
+// still reads; its tangential force and slip are "not recorded" (NaN), never
+// 0, and every other column is as written. The old table is made by h5py
+// from the new one, without the two fields.
+TEST_F(ResultsFileTest, AFileWithoutTheFrictionColumnsReadsThemAsNotRecorded) {
+  const fs::path p = dir_ / "old.h5";
+  const ResultsFile in = sample_results();
+  write_results_file(p, in);
+  const std::string py =
+      "/usr/bin/python3 -c 'import h5py, numpy, sys\n"
+      "with h5py.File(sys.argv[1], \"r+\") as f:\n"
+      "    def strip(name, obj):\n"
+      "        if isinstance(obj, h5py.Dataset) and name.endswith(\"/contacts\"):\n"
+      "            rows = obj[()]\n"
+      "            keep = [n for n in rows.dtype.names if n not in (\"tangential_force_n\", \"slip_mps\")]\n"
+      "            old = numpy.empty(len(rows), dtype=[(n, rows.dtype[n]) for n in keep])\n"
+      "            for n in keep: old[n] = rows[n]\n"
+      "            todo.append((name, old))\n"
+      "    todo = []\n"
+      "    f.visititems(strip)\n"
+      "    for name, old in todo:\n"
+      "        del f[name]\n"
+      "        f.create_dataset(name, data=old)\n"
+      "' " + p.string();
+  ASSERT_EQ(std::system(py.c_str()), 0) << py;
+  const ResultsFile out = read_results_file(p);
+  std::size_t rows = 0;
+  for (std::size_t c = 0; c < in.cases.size(); ++c) {
+    for (std::size_t r = 0; r < in.cases[c].runs.size(); ++r) {
+      const auto& a = in.cases[c].runs[r].contacts;
+      const auto& b = out.cases[c].runs[r].contacts;
+      ASSERT_EQ(a.size(), b.size());
+      for (std::size_t i = 0; i < a.size(); ++i, ++rows) {
+        EXPECT_TRUE(std::isnan(b[i].sample.tangential_force_n));
+        EXPECT_TRUE(std::isnan(b[i].sample.slip_mps));
+        EXPECT_SAME_DOUBLE(a[i].sample.force_n, b[i].sample.force_n);
+        EXPECT_SAME_DOUBLE(a[i].time_s, b[i].time_s);
+      }
+    }
+  }
+  EXPECT_GT(rows, 5000u);
 }
 
 // ---- atomic writing ------------------------------------------------------------

@@ -26,7 +26,8 @@ BODY_DATASETS = {  # name: (unit, columns or None for [n])
     "velocity": ("m/s", 2), "angular_velocity": ("rad/s", None)}
 TABLES = {
     "contacts": [("time", "s"), ("body_a", ""), ("body_b", ""), ("force_n", "N"),
-                 ("penetration", "m"), ("normal", "1"), ("point", "m")],
+                 ("penetration", "m"), ("normal", "1"), ("point", "m"),
+                 ("tangential_force_n", "N"), ("slip_mps", "m/s")],
     "events": [("body_a", ""), ("body_b", ""), ("onset_time", "s"), ("offset_time", "s"),
                ("approach_speed", "m/s"), ("separation_speed", "m/s"), ("restitution", "1"),
                ("peak_force", "N"), ("impulse", "N s"), ("max_penetration", "m")],

@@ -3,6 +3,7 @@
 // common output grid (runner.hpp).
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -30,7 +31,18 @@ struct ContactSample {
   Vec2 normal = Vec2::Zero();        // unit normal, pointing from body_a to body_b
   Vec2 point_m = Vec2::Zero();       // m, world contact point: midpoint of the two
                                      // bodies' contact (deepest / closest) points
+  // Friction (issue 32), along the tangent t = n rotated by +90 deg
+  // (contact_tangent): the tangential force on body_b (N, signed; 0 for a
+  // frictionless pair) and the slip, body_b's material point's velocity
+  // relative to body_a's at point_m (m/s, signed; the runner fills it from
+  // the engine's body states). NaN: not recorded (an older file, an engine
+  // that does not give it), never 0.
+  double tangential_force_n = std::numeric_limits<double>::quiet_NaN();
+  double slip_mps = std::numeric_limits<double>::quiet_NaN();
 };
+
+// t = n rotated by +90 deg: the tangent of a contact's tangential columns
+[[nodiscard]] inline Vec2 contact_tangent(const Vec2& n) { return Vec2(-n.y(), n.x()); }
 
 // one contact episode: from penetration > 0 until it returns to 0 (SPEC §4)
 struct ContactEpisode {

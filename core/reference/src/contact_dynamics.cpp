@@ -247,6 +247,18 @@ PairEvaluation ContactDynamics::evaluate_pair(int k, const Eigen::VectorXd& y, c
   return evaluate(k, mode);
 }
 
+void ContactDynamics::evaluate_with_friction(const Eigen::VectorXd& y,
+                                             const std::vector<PairMode>& modes,
+                                             std::vector<PairEvaluation>& out) {
+  std::vector<PairMode> kept = modes_;
+  const long evaluations = evaluations_;
+  modes_ = modes;
+  derivative(y, output_dy_);
+  out = last_;
+  modes_ = std::move(kept);
+  evaluations_ = evaluations;
+}
+
 BodyState ContactDynamics::body_state(int body, const Eigen::VectorXd& y) const {
   const int n = coordinates();
   return model_.state(body, y.head(n), y.segment(n, n));

@@ -574,6 +574,11 @@ void ReferenceSolver::set_output(double t_s) {
   }
   sg.dense.evaluate(t_s, y_out_);
   out_modes_ = sg.modes;
+  if (sys_.has_friction()) {
+    // the friction forces need the whole derivative (issue 32: stored per sample)
+    sys_.evaluate_with_friction(y_out_, out_modes_, out_pairs_);
+    return;
+  }
   out_pairs_.resize(out_modes_.size());
   for (int k = 0; k < sys_.pair_count(); ++k) {
     const auto ku = static_cast<std::size_t>(k);
@@ -596,6 +601,8 @@ void ReferenceSolver::contacts(std::vector<ContactSample>& out) const {
     cs.penetration_m = e.geometry.penetration_m();
     cs.normal = e.geometry.normal;
     cs.point_m = 0.5 * (e.geometry.point_a_m + e.geometry.point_b_m);
+    // friction_n is along (n.y, -n.x), the opposite of the stored tangent
+    cs.tangential_force_n = e.friction_n == 0.0 ? 0.0 : -e.friction_n;
     out.push_back(cs);
   }
 }

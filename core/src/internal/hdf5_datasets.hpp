@@ -8,6 +8,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -192,6 +194,9 @@ struct TableField {
   FieldKind kind;
   std::size_t offset;  // bytes, offsetof(Record, member)
   const char* unit;    // "1" dimensionless, "" for names
+  // a column added after files were written (f8 only): a file without it is
+  // read with NaN there ("not recorded", never 0)
+  bool optional = false;
 };
 
 struct TableLayout {
@@ -282,8 +287,19 @@ std::vector<Record> read_table(hid_t loc, const char* name, const TableLayout& l
   }
   check_rows_stored(d.get(), object);
   auto out = allocate_rows<Record>(n, object);
+  // the columns this file has; an optional one it lacks reads as NaN
+  TableLayout present{layout.record_size, {}};
+  for (const auto& f : layout.fields) {
+    if (H5Tget_member_index(file_type.get(), f.name) >= 0) {
+      present.fields.push_back(f);
+      continue;
+    }
+    hdf5_last_error();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (Record& row : out) std::memcpy(reinterpret_cast<char*>(&row) + f.offset, &nan, sizeof nan);
+  }
   if (n > 0) {
-    Hid mem_type = table_type(layout, false, object);
+    Hid mem_type = table_type(present, false, object);
     check(H5Dread(d.get(), mem_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), object,
           "cannot read the table");
   }

@@ -25,6 +25,8 @@ struct ContactRecord {
   double penetration_m;
   double normal[2];
   double point_m[2];
+  double tangential_force_n;
+  double slip_mps;
 };
 
 struct EventRecord {
@@ -50,7 +52,10 @@ inline const TableLayout& contact_layout() {
        {"force_n", FieldKind::f8, offsetof(ContactRecord, force_n), "N"},
        {"penetration", FieldKind::f8, offsetof(ContactRecord, penetration_m), "m"},
        {"normal", FieldKind::f8x2, offsetof(ContactRecord, normal), "1"},
-       {"point", FieldKind::f8x2, offsetof(ContactRecord, point_m), "m"}}};
+       {"point", FieldKind::f8x2, offsetof(ContactRecord, point_m), "m"},
+       // issue 32: along t = n rotated by +90 deg; files before it lack them
+       {"tangential_force_n", FieldKind::f8, offsetof(ContactRecord, tangential_force_n), "N", true},
+       {"slip_mps", FieldKind::f8, offsetof(ContactRecord, slip_mps), "m/s", true}}};
   return layout;
 }
 
@@ -100,6 +105,8 @@ inline ContactRecord contact_record(double time_s, const ContactSample& c,
   row.normal[1] = c.normal.y();
   row.point_m[0] = c.point_m.x();
   row.point_m[1] = c.point_m.y();
+  row.tangential_force_n = c.tangential_force_n;
+  row.slip_mps = c.slip_mps;
   return row;
 }
 

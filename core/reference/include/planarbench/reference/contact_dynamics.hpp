@@ -100,6 +100,12 @@ class ContactDynamics final : public OdeSystem {
   // pair k at y under `mode`, without the derivative (friction_n: 0)
   [[nodiscard]] PairEvaluation evaluate_pair(int k, const Eigen::VectorXd& y, const PairMode& mode);
 
+  // Every pair at y under `modes` with its friction force (the derivative's
+  // evaluation: a stick force needs every other force), for output between
+  // steps (issue 32); the phases and the evaluation count are left as they were.
+  void evaluate_with_friction(const Eigen::VectorXd& y, const std::vector<PairMode>& modes,
+                              std::vector<PairEvaluation>& out);
+
   // Chooses pair k's tangential phase at y now that it presses (at its
   // onset, when its slip speed crossed zero, or when its stick force reached
   // the cone): stick if it can hold (|v| <= kStickSpeed_mps and the stick
@@ -150,6 +156,7 @@ class ContactDynamics final : public OdeSystem {
   std::vector<int> stick_pairs_;         // scratch: their pair indices
   std::vector<double> stick_force_n_;    // scratch: their forces
   Eigen::VectorXd u_dot_;                // scratch
+  Eigen::VectorXd output_dy_;            // scratch: evaluate_with_friction's derivative
 };
 
 }  // namespace pb
