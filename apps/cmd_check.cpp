@@ -90,13 +90,7 @@ int run_check(const CheckOptions& opt) {
   check_threshold_names(opt.thresholds, thresholds, results);
   // each case as it was run: its text under the --set case keys stored with it
   std::vector<Case> cases;
-  for (const auto& cr : results.cases) {
-    SettingsOverrides case_keys;
-    for (const auto& [key, value] : cr.overrides) {
-      if (is_case_key(key)) case_keys.set(key, value, SettingSource{"--set", 0});
-    }
-    cases.push_back(parse_case(cr.case_text, cr.case_path, cr.case_name, case_keys));
-  }
+  for (const auto& cr : results.cases) cases.push_back(case_as_run(cr));
   refuse_runs_out_of_scope(opt.results,
                            runs_out_of_scope(results, cases, opt.thresholds, file.covers,
                                                              file.truths));

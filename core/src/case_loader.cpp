@@ -524,6 +524,14 @@ bool is_case_key(const std::string& key) {
   return false;
 }
 
+Case case_as_run(const CaseRuns& runs) {
+  SettingsOverrides case_keys;
+  for (const auto& [key, value] : runs.overrides) {
+    if (is_case_key(key)) case_keys.set(key, value, SettingSource{"--set", 0});
+  }
+  return parse_case(runs.case_text, runs.case_path, runs.case_name, case_keys);
+}
+
 Case parse_case(std::string_view text, const std::string& source, const std::string& case_name,
                 const SettingsOverrides& case_overrides) {
   toml::table root;

@@ -33,15 +33,6 @@ using internal::Report;
 
 namespace {
 
-// the case a run was made of: its file text with the --set case keys applied
-Case case_of(const CaseRuns& cr) {
-  SettingsOverrides case_keys;
-  for (const auto& [key, value] : cr.overrides) {
-    if (is_case_key(key)) case_keys.set(key, value, SettingSource{"--set", 0});
-  }
-  return parse_case(cr.case_text, cr.case_path, cr.case_name, case_keys);
-}
-
 internal::CaseSection case_section(const Case& c, const CaseRuns& cr,
                                    const internal::FigureLimits& limits) {
   internal::CaseSection s;
@@ -167,7 +158,7 @@ ReportSummary write_report(const ReportOptions& options) {
   std::vector<MetricValue> metrics;
   std::vector<InvalidRun> invalid;  // NaN or inf in a run's samples: its checks fail
   for (const auto& cr : results.cases) {
-    cases.push_back(case_of(cr));
+    cases.push_back(case_as_run(cr));
     report.cases.push_back(case_section(cases.back(), cr, limits));
     auto m = case_metrics(cases.back(), cr);
     metrics.insert(metrics.end(), m.begin(), m.end());

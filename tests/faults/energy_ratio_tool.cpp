@@ -61,12 +61,7 @@ int main(int argc, char** argv) {
     for (int a = 1; a < argc; ++a) {
       const pb::ResultsFile f = pb::read_results_file(argv[a]);
       for (const auto& cr : f.cases) {
-        // the case as it was run: its text under the --set case keys stored with it
-        pb::SettingsOverrides case_keys;
-        for (const auto& [key, value] : cr.overrides) {
-          if (pb::is_case_key(key)) case_keys.set(key, value, pb::SettingSource{"--set", 0});
-        }
-        const pb::Case c = pb::parse_case(cr.case_text, cr.case_path, cr.case_name, case_keys);
+        const pb::Case c = pb::case_as_run(cr);
         for (const auto& r : cr.runs) report_run(c, r);
       }
     }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "planarbench/case.hpp"
+#include "planarbench/run_result.hpp"
 #include "planarbench/settings.hpp"
 
 namespace pb {
@@ -24,6 +25,10 @@ namespace pb {
 [[nodiscard]] Case parse_case(std::string_view text, const std::string& source,
                               const std::string& case_name,
                               const SettingsOverrides& case_overrides = {});
+
+// The case a run of a results file was made of: its stored text under the
+// case keys of the --set pairs stored with it (the others address engines).
+[[nodiscard]] Case case_as_run(const CaseRuns& runs);
 
 // Loads a case by path. The case name is the file stem.
 [[nodiscard]] Case load_case(const std::filesystem::path& path,

@@ -1,8 +1,13 @@
 // The slip of a contact (issue 32): the velocity of body_b's material point
-// at the contact point relative to body_a's, along t = n rotated by +90 deg,
-// v(p) = v + omega x (p - x) for each body (a fixed body does not move). One
-// definition for every engine: the runner fills ContactSample::slip_mps from
-// the engine's own body states at the sample's time.
+// at its contact point relative to body_a's at its own, along t = n rotated
+// by +90 deg, v(p) = v + omega x (p - x) for each body (a fixed body does not
+// move). A sample's point is the midpoint of the two bodies' contact points,
+// which lie half the penetration from it along -n (body_b's, the deepest of b
+// inside a) and +n (body_a's): at the midpoint itself a disk rolling without
+// slip on a soft contact would show omega delta / 2 of slip (1e-3 m/s on
+// sliding_friction). One definition for every engine: the runner fills
+// ContactSample::slip_mps from the engine's own body states at the sample's
+// time; a penetration the engine does not give (NaN) leaves the midpoint.
 #pragma once
 
 #include <cmath>
@@ -32,8 +37,9 @@ namespace pb {
 inline void fill_slip(const Case& c, const std::vector<BodyState>& states,
                       std::vector<ContactSample>& samples) {
   for (ContactSample& s : samples) {
-    const Vec2 rel = material_point_velocity(c, states, s.body_b, s.point_m) -
-                     material_point_velocity(c, states, s.body_a, s.point_m);
+    const double half = std::isfinite(s.penetration_m) ? 0.5 * s.penetration_m : 0.0;  // m
+    const Vec2 rel = material_point_velocity(c, states, s.body_b, s.point_m - half * s.normal) -
+                     material_point_velocity(c, states, s.body_a, s.point_m + half * s.normal);
     s.slip_mps = rel.dot(contact_tangent(s.normal));
   }
 }
