@@ -250,12 +250,13 @@ PairEvaluation ContactDynamics::evaluate_pair(int k, const Eigen::VectorXd& y, c
 void ContactDynamics::evaluate_with_friction(const Eigen::VectorXd& y,
                                              const std::vector<PairMode>& modes,
                                              std::vector<PairEvaluation>& out) {
-  std::vector<PairMode> kept = modes_;
+  // copies into vectors that keep their capacity: no allocation after the first output
+  kept_modes_ = modes_;
   const long evaluations = evaluations_;
   modes_ = modes;
   derivative(y, output_dy_);
   out = last_;
-  modes_ = std::move(kept);
+  modes_ = kept_modes_;
   evaluations_ = evaluations;
 }
 

@@ -157,6 +157,7 @@ class ContactDynamics final : public OdeSystem {
   std::vector<double> stick_force_n_;    // scratch: their forces
   Eigen::VectorXd u_dot_;                // scratch
   Eigen::VectorXd output_dy_;            // scratch: evaluate_with_friction's derivative
+  std::vector<PairMode> kept_modes_;     // scratch: the phases it leaves as they were
 };
 
 }  // namespace pb
