@@ -23,7 +23,10 @@ std::string problem_at(const CampaignPlan& sub, const CampaignPlan::RunRef& r,
   for (const auto& [key, value] : sub.assignments(r)) assignments.push_back(key + "=" + value);
   try {
     const Overrides o = parse_overrides(assignments);
-    const Case loaded = load_case(sub.cases.front().path, o.case_keys);
+    // the text the plan read once (load_case would read the file again per point)
+    const Case& planned = sub.cases.front().c;
+    const Case loaded =
+        parse_case(planned.source_text, planned.source_path, planned.name, o.case_keys);
     check_engine_settings(o.engine_keys, sub.engines);
     const SettingsOverrides settings = engine_settings_for(loaded, o.engine_keys);
     for (const auto& e : sub.engines) make_engine(e)->settings().apply(settings);

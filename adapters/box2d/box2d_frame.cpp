@@ -39,10 +39,4 @@ BodyState body_state(const b2Body& body) {
   return s;
 }
 
-// rigid-body kinematics: v_p = v + omega x (p - c), omega x r = omega (-r_y, r_x)
-Vec2 point_velocity(const BodyState& body, const Vec2& p_m) {
-  const Vec2 r = p_m - body.position_m;
-  return body.velocity_mps + body.angular_velocity_radps * Vec2(-r.y(), r.x());
-}
-
 }  // namespace pb::internal::box2d

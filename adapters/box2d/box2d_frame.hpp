@@ -28,7 +28,6 @@ namespace pb::internal::box2d {
 // b2Body::GetAngle is the unwrapped sweep angle), velocities
 [[nodiscard]] BodyState body_state(const b2Body& body);
 
-// velocity of the material point of `body` at world point p_m, m/s
-[[nodiscard]] Vec2 point_velocity(const BodyState& body, const Vec2& p_m);
+// (the velocity of a material point: pb::point_velocity, planarbench/engine.hpp)
 
 }  // namespace pb::internal::box2d

@@ -15,12 +15,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // of two smooth swinging shapes, so no crossing falls between two samples
 constexpr double kSamplesPerSwing = 1024.0;
 
-// velocity of the body's material point at p: v + w x (p - c)
-Vec2 point_velocity(const BodyState& s, const Vec2& p) {
-  const Vec2 r = p - s.position_m;
-  return s.velocity_mps + s.angular_velocity_radps * Vec2(-r.y(), r.x());
-}
-
 }  // namespace
 
 PendulumsUntilContact::PendulumsUntilContact(const Case& c) {

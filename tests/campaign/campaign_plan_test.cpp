@@ -236,35 +236,26 @@ cases = ["falling_ball"]
 engines = ["mujoco"]
 metrics = ["position_error_m"]
 )";
-  const std::string why = refusal("together.toml", head + R"(
-[[axis]]
-key = "duration"
-values = [0.5, 0.001]
-
-[[axis]]
-key = "output_interval"
-values = [1e-3, 0.01]
-)");
+  // a duration axis and an output_interval axis, each given by its TOML line
+  // of points ("values = [...]", "linear = {...}")
+  const auto two_axes = [&head](const std::string& durations, const std::string& intervals) {
+    return head + "\n[[axis]]\nkey = \"duration\"\n" + durations +
+           "\n\n[[axis]]\nkey = \"output_interval\"\n" + intervals + "\n";
+  };
+  const std::string why =
+      refusal("together.toml", two_axes("values = [0.5, 0.001]", "values = [1e-3, 0.01]"));
   EXPECT_NE(why.find("together.toml:7: axis[0], axis[1]: the axes together: at duration = 0.001, "
                      "output_interval = 0.01 on case 'falling_ball'"),
             std::string::npos)
       << why;
   EXPECT_NE(why.find("must be <= duration"), std::string::npos) << why;
   // the same axes with every combination valid plan
-  EXPECT_EQ(refusal("together_ok.toml", head + R"(
-[[axis]]
-key = "duration"
-values = [0.5, 0.1]
-
-[[axis]]
-key = "output_interval"
-values = [1e-3, 0.01]
-)"),
+  EXPECT_EQ(refusal("together_ok.toml", two_axes("values = [0.5, 0.1]", "values = [1e-3, 0.01]")),
             "(planned)");
   // past kMaxCheckedCombinations the corners are checked: the bad pair is
   // each axis's extreme (300 x 300 values)
-  std::string many = head + "\n[[axis]]\nkey = \"duration\"\nlinear = { from = 0.002, to = 1, points = 300 }\n"
-                            "\n[[axis]]\nkey = \"output_interval\"\nlinear = { from = 1e-3, to = 0.01, points = 300 }\n";
-  const std::string corner = refusal("corners.toml", many);
+  const std::string corner =
+      refusal("corners.toml", two_axes("linear = { from = 0.002, to = 1, points = 300 }",
+                                       "linear = { from = 1e-3, to = 0.01, points = 300 }"));
   EXPECT_NE(corner.find("at duration = 0.002, output_interval = 0.01"), std::string::npos) << corner;
 }

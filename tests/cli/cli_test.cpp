@@ -39,6 +39,12 @@ fs::path work_dir() {
   return PB_WORK_DIR;
 }
 
+// `planarbench check` of `results` against the committed cases/thresholds.toml
+Outcome check_committed(const fs::path& results) {
+  return run("check --thresholds " + std::string(PB_SOURCE_DIR) + "/cases/thresholds.toml " +
+             results.string());
+}
+
 // exit status of tests/python/same_datasets.py A B (h5py alone): 0 when every
 // dataset of the two results files is the same
 int same_datasets(const fs::path& a, const fs::path& b) {
@@ -208,8 +214,7 @@ TEST(Gate, FullMatrixPassesTheCommittedThresholds) {
   const auto out = work_dir() / "gate_all.h5";
   const auto r = run("run --case all --engine all --jobs 2 --quiet --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
-                     "/cases/thresholds.toml " + out.string());
+  const auto c = check_committed(out);
   EXPECT_EQ(c.exit_code, 0) << c.output;
   EXPECT_TRUE(contains(c.output, " 0 breached")) << c.output;
   // the JUnit XML and the Markdown summary land beside the results
@@ -236,8 +241,7 @@ TEST(Gate, OneEngineParameterChangeBreachesAndIsNamed) {
   const auto r = run("run --case falling_ball --engine analytic,ode --quiet "
                      "--set ode.damping_mapping=textbook --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto refused = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
-                           "/cases/thresholds.toml " + out.string());
+  const auto refused = check_committed(out);
   EXPECT_EQ(refused.exit_code, 2) << refused.output;
   EXPECT_TRUE(contains(refused.output, "falling_ball.ode (ode.damping_mapping = \"textbook\" "
                                        "(derived for \"corrected\"))"))
@@ -258,8 +262,7 @@ TEST(Gate, CaseKeysGivenWithSetAreRefusedNamingRunAndKey) {
     const auto r = run("run --case falling_ball --engine analytic,mujoco --quiet --set " + set +
                        " --out " + out.string());
     ASSERT_EQ(r.exit_code, 0) << r.output;
-    const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
-                       "/cases/thresholds.toml " + out.string());
+    const auto c = check_committed(out);
     EXPECT_EQ(c.exit_code, 2) << c.output;
     const std::string key = set.substr(0, set.find('='));
     EXPECT_TRUE(contains(c.output, "falling_ball.mujoco (" + key + " = ")) << c.output;
@@ -309,8 +312,7 @@ TEST(Gate, ALookAheadIsRefused) {
                          "    a[\"extra\"] = json.dumps(x)\n' " +
                          out.string();
   ASSERT_EQ(std::system(py.c_str()), 0);
-  const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
-                     "/cases/thresholds.toml " + out.string());
+  const auto c = check_committed(out);
   EXPECT_EQ(c.exit_code, 2) << c.output;
   EXPECT_TRUE(contains(c.output, "falling_ball.mujoco (steps_before_start = 3")) << c.output;
 }
@@ -323,8 +325,7 @@ TEST(Gate, AnUnsupportedRunInOtherSettingsIsRefused) {
   const auto r = run("run --case block_slide --engine analytic,box2d,ode --quiet "
                      "--set box2d.mode=inject --set ode.mode=inject --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
-                     "/cases/thresholds.toml " + out.string());
+  const auto c = check_committed(out);
   EXPECT_EQ(c.exit_code, 2) << c.output;
   EXPECT_TRUE(contains(c.output, "2 run(s) made outside what the thresholds were derived for"))
       << c.output;
@@ -340,8 +341,7 @@ TEST(Gate, OracleResultsAreRefusedNamingTheRuns) {
   const auto r = run("run --case falling_ball --engine analytic,mujoco,ode,box2d --quiet "
                      "--set mujoco.mode=oracle --set ode.mode=oracle --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
-                     "/cases/thresholds.toml " + out.string());
+  const auto c = check_committed(out);
   EXPECT_EQ(c.exit_code, 2) << c.output;
   EXPECT_TRUE(contains(c.output, "2 run(s) made outside what the thresholds were derived for"))
       << c.output;
@@ -361,16 +361,14 @@ TEST(Gate, ChangedStepOrOutlineIsRefused) {
   const auto dt = work_dir() / "gate_dt.h5";
   ASSERT_EQ(run("run --case falling_ball --engine analytic,box2d --quiet --set dt=2e-4 --out " +
                 dt.string()).exit_code, 0);
-  const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
-                     "/cases/thresholds.toml " + dt.string());
+  const auto c = check_committed(dt);
   EXPECT_EQ(c.exit_code, 2) << c.output;
   EXPECT_TRUE(contains(c.output, "falling_ball.box2d (box2d.dt = 0.0002 (derived for 0.0001))"))
       << c.output;
   const auto outline = work_dir() / "gate_outline.h5";
   ASSERT_EQ(run("run --case falling_ball --engine analytic,reference --quiet "
                 "--set outline_points=90 --out " + outline.string()).exit_code, 0);
-  const auto o = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
-                     "/cases/thresholds.toml " + outline.string());
+  const auto o = check_committed(outline);
   EXPECT_EQ(o.exit_code, 2) << o.output;
   EXPECT_TRUE(contains(o.output, "bodies.ball.outline_points = 90 (derived for 180)")) << o.output;
   const auto covering = thresholds_covering("covers_dt.toml", "\"dt\"");
@@ -571,16 +569,14 @@ TEST(Gate, ARunBeyondItsBandsStepAssumptionFails) {
                 good.string()).exit_code, 0);
   const auto damaged = work_dir() / "steps_assumed_many.h5";
   ASSERT_EQ(damage_copy(good, damaged, "steps_many", "/runs/falling_ball/reference"), "");
-  const auto c = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
-                     "/cases/thresholds.toml " + damaged.string());
+  const auto c = check_committed(damaged);
   EXPECT_EQ(c.exit_code, 1) << c.output;
   EXPECT_TRUE(contains(c.output, "ASSUMPTION BROKEN falling_ball.reference restitution vs truth"))
       << c.output;
   EXPECT_TRUE(contains(c.output, "the band assumes at most 1200 accepted steps (steps_at_most), "
                                  "the run took 1000000"))
       << c.output;
-  const auto as_run = run("check --thresholds " + std::string(PB_SOURCE_DIR) +
-                          "/cases/thresholds.toml " + good.string());
+  const auto as_run = check_committed(good);
   EXPECT_FALSE(contains(as_run.output, "ASSUMPTION BROKEN")) << as_run.output;
 }
 

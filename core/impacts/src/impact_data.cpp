@@ -198,28 +198,16 @@ struct MatioLogScope {
   MatioLogScope& operator=(const MatioLogScope&) = delete;
 };
 
-// the most impacts a file may hold: 1e5 (MCube's training split has 1146),
-// 1e5 x 36 doubles = 29 MB of data and v_models; a header claiming more is
-// refused before anything is allocated (issue 35: 5e7 x 6 ended in bad_alloc)
-constexpr std::size_t kMaxImpacts = 100000;
-
-// what a variable's header claims, checked before its data is read: at most
-// kMaxImpacts rows of at most 18 columns, and, stored uncompressed, no more
-// bytes than the file has (a 416-byte file claimed 2.4 GB)
+// what a variable's header claims, checked before its data is read: stored
+// uncompressed, no more bytes than the file has (a 416-byte file claimed
+// 2.4 GB). How many values a matrix may claim (1e5 impacts of 18 values at
+// most) is mat_preflight.cpp's, which walks every MAT v5 file before libmatio
+// opens it, so the product below cannot overflow.
 void check_claim(const std::string& path, const std::string& name, const matvar_t* v,
                  std::uintmax_t file_bytes) {
   if (v == nullptr || v->rank < 1 || v->dims == nullptr) return;
   std::size_t elements = 1;
-  for (int k = 0; k < v->rank; ++k) {
-    const std::size_t d = v->dims[k];
-    if (d > kMaxImpacts * 18 || (d != 0 && elements > kMaxImpacts * 18 / d)) {
-      refuse(path, name,
-             fmt::format("claims {} values: a file holds at most {} impacts (18 values each at "
-                         "most); refused before reading",
-                         shape_of(v), kMaxImpacts));
-    }
-    elements *= d;
-  }
+  for (int k = 0; k < v->rank; ++k) elements *= v->dims[k];
   if (v->compression == MAT_COMPRESSION_NONE && elements * 8 > file_bytes) {
     refuse(path, name,
            fmt::format("claims {} doubles ({} bytes) in a {}-byte file: truncated or damaged",

@@ -28,9 +28,7 @@ namespace pb {
     return Vec2(nan, nan);
   }
   if (c.bodies[k].fixed) return Vec2::Zero();
-  const BodyState& s = states[k];
-  const Vec2 r = p - s.position_m;
-  return s.velocity_mps + s.angular_velocity_radps * Vec2(-r.y(), r.x());
+  return point_velocity(states[k], p);
 }
 
 // sets each sample's slip_mps from `states` (index = Case::bodies index)

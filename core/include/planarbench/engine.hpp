@@ -22,6 +22,13 @@ struct BodyState {
   double angular_velocity_radps = 0.0;   // rad/s
 };
 
+// m/s, the velocity of the body's material point at world point p_m:
+// v + omega x (p - x)
+[[nodiscard]] inline Vec2 point_velocity(const BodyState& body, const Vec2& p_m) {
+  const Vec2 r = p_m - body.position_m;
+  return body.velocity_mps + body.angular_velocity_radps * Vec2(-r.y(), r.x());
+}
+
 // one active contact at the engine's current time
 struct ContactSample {
   int body_a = -1;                   // index into Case::bodies
