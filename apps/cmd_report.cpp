@@ -89,6 +89,7 @@ int run_report(const ReportOptionsCli& opt) {
     }
     if (s.campaign_cases > 0) std::printf(", campaign of %zu cases", s.campaign_cases);
     if (s.friction_figures > 0) std::printf(", %zu friction figures", s.friction_figures);
+    if (s.validity_figures > 0) std::printf(", %zu physical-validity figures", s.validity_figures);
     if (s.impacts_figures > 0) std::printf(", measured impacts (%zu figures)", s.impacts_figures);
     std::printf(")\n");
   }

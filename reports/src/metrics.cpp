@@ -1,5 +1,6 @@
 #include "planarbench/reports/metrics.hpp"
 
+#include "planarbench/reports/contact_validity.hpp"
 #include "planarbench/reports/friction_metrics.hpp"
 
 #include <algorithm>
@@ -394,6 +395,7 @@ std::vector<MetricValue> case_metrics(const Case& c, const CaseRuns& runs) {
       append(compare_runs(c, r, *reference, "reference", kInf));
     }
     append(self_metrics(c, r));
+    append(validity_metrics(c, r));  // SPEC §9, against "self"
   }
   // engine against engine: the discrepancy matrix (upper triangle)
   for (std::size_t i = 0; i < runs.runs.size(); ++i) {

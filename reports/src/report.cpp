@@ -14,6 +14,7 @@
 #include "report_figures.hpp"
 #include "report_files.hpp"
 #include "report_friction.hpp"
+#include "report_validity.hpp"
 #include "report_html.hpp"
 #include "planarbench/output_file.hpp"
 #include "report_mapping.hpp"
@@ -171,6 +172,7 @@ ReportSummary write_report(const ReportOptions& options) {
     }
   }
   report.friction = internal::friction_section(cases, results, campaigns);
+  report.validity = internal::validity_section(cases, results);
   const auto outcomes = check_thresholds(thresholds, metrics, invalid);
   std::size_t failed = 0;
   std::size_t known = 0;
@@ -238,8 +240,13 @@ ReportSummary write_report(const ReportOptions& options) {
     internal::write_text_atomically(options.out_dir / ("figures/" + f.id + ".svg"), f.svg);
     ++summary.svg_files;
   }
+  for (const auto& f : report.validity.figures) {
+    internal::write_text_atomically(options.out_dir / ("figures/" + f.id + ".svg"), f.svg);
+    ++summary.svg_files;
+  }
   summary.impacts_figures = report.impacts.figures.size();
   summary.friction_figures = report.friction.figures.size();
+  summary.validity_figures = report.validity.figures.size();
   summary.campaign_cases = report.campaign.cases.size();
   summary.work_precision_cases = report.work_precision.size();
   summary.markdown = options.out_dir / "report.md";

@@ -49,6 +49,13 @@ nlohmann::json table_json(const Table& t) {
                         {"columns", t.columns}, {"rows", t.rows},   {"row_status", t.row_status}};
 }
 
+// figures drawn as SVG text (campaign, friction, impacts, validity sections)
+nlohmann::json figures_json(const std::vector<CampaignFigure>& figures) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& f : figures) out.push_back({{"id", f.id}, {"title", f.title}, {"svg", f.svg}});
+  return out;
+}
+
 // text placed in a <script> or <style> element must not close it early
 std::string script_safe(std::string text, const char* closing) {
   const std::string needle = std::string("</") + closing;
@@ -177,10 +184,7 @@ nlohmann::json report_data_json(const Report& report) {
   // the campaign section: per case its figures (SVG text) and tables
   nlohmann::json campaign_cases = nlohmann::json::array();
   for (const auto& c : report.campaign.cases) {
-    nlohmann::json figures = nlohmann::json::array();
-    for (const auto& f : c.figures) {
-      figures.push_back({{"id", f.id}, {"title", f.title}, {"svg", f.svg}});
-    }
+    const nlohmann::json figures = figures_json(c.figures);
     nlohmann::json case_tables = nlohmann::json::array();
     for (const auto& t : c.tables) case_tables.push_back(table_json(t));
     campaign_cases.push_back(
@@ -191,27 +195,24 @@ nlohmann::json report_data_json(const Report& report) {
                       {"cases", campaign_cases}};
 
   // the friction section: figures (SVG text) and the curve's table
-  nlohmann::json friction_figures = nlohmann::json::array();
-  for (const auto& f : report.friction.figures) {
-    friction_figures.push_back({{"id", f.id}, {"title", f.title}, {"svg", f.svg}});
-  }
   data["friction"] = {{"note", report.friction.note},
                       {"curve_file", report.friction.curve_file},
-                      {"figures", friction_figures},
+                      {"figures", figures_json(report.friction.figures)},
                       {"curve", table_json(report.friction.curve)},
                       {"family", table_json(report.friction.family)}};
 
   // the measured-impacts section: figures (SVG text) and tables
-  nlohmann::json impact_figures = nlohmann::json::array();
-  for (const auto& f : report.impacts.figures) {
-    impact_figures.push_back({{"id", f.id}, {"title", f.title}, {"svg", f.svg}});
-  }
   nlohmann::json impact_tables = nlohmann::json::array();
   for (const auto& t : report.impacts.tables) impact_tables.push_back(table_json(t));
   data["impacts"] = {{"file", report.impacts.file},
                      {"note", report.impacts.note},
-                     {"figures", impact_figures},
+                     {"figures", figures_json(report.impacts.figures)},
                      {"tables", impact_tables}};
+  // the physical-validity section: readings, table, figures (SVG text)
+  data["validity"] = {{"note", report.validity.note},
+                      {"readings", report.validity.readings},
+                      {"table", table_json(report.validity.table)},
+                      {"figures", figures_json(report.validity.figures)}};
   return data;
 }
 

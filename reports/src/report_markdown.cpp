@@ -176,6 +176,15 @@ std::string impacts_markdown(const Report& report) {
   return md;
 }
 
+std::string validity_markdown(const Report& report) {
+  const ValiditySection& v = report.validity;
+  std::string md = "## Physical validity\n\n" + v.note + "\n\n";
+  for (const auto& line : v.readings) md += "- " + md_text(line) + "\n";
+  md += "\n### " + v.table.title + "\n\n" + v.table.note + "\n\n" + markdown_table(v.table) + "\n";
+  for (const auto& fig : v.figures) md += fmt::format("![{}](figures/{}.svg)\n\n", md_text(fig.title), fig.id);
+  return md;
+}
+
 std::vector<FigureView> figure_views(const Figure& f) {
   std::vector<FigureView> views;
   views.push_back(FigureView{"figures/" + f.id + ".svg", f.title, 0.0, f.t_end_s});
@@ -241,6 +250,7 @@ std::string report_markdown(const Report& report) {
   if (!report.campaign.cases.empty()) md += "- [Campaign](#campaign)\n";
   if (!report.friction.figures.empty()) md += "- [Friction](#friction)\n";
   if (!report.impacts.file.empty()) md += "- [Measured impacts](#measured-impacts)\n";
+  if (!report.validity.table.rows.empty()) md += "- [Physical validity](#physical-validity)\n";
   for (const auto& t : report.tables) md += fmt::format("- [{}](#{})\n", md_text(t.title), anchor(t.title));
   if (!report.results_file.empty()) md += "- [Parameter mapping](#parameter-mapping)\n";
   md += "\n";
@@ -282,6 +292,7 @@ std::string report_markdown(const Report& report) {
   if (!report.campaign.cases.empty()) md += campaign_markdown(report);
   if (!report.friction.figures.empty()) md += friction_markdown(report);
   if (!report.impacts.file.empty()) md += impacts_markdown(report);
+  if (!report.validity.table.rows.empty()) md += validity_markdown(report);
   for (const auto& t : report.tables) section_table(md, t);
   // a sweep-only report has no runs to map
   if (report.results_file.empty()) return md;

@@ -153,6 +153,14 @@ struct ImpactsSection {
   std::vector<Table> tables;
 };
 
+// the physical-validity section (report_validity.hpp)
+struct ValiditySection {
+  std::string note;
+  std::vector<std::string> readings;  // one line per engine
+  Table table;
+  std::vector<CampaignFigure> figures;
+};
+
 struct Report {
   std::string results_file;                                     // as given on the command line
   std::string thresholds_file;                                  // "" when none
@@ -170,6 +178,7 @@ struct Report {
   CampaignSection campaign;  // empty unless the results file holds a campaign
   FrictionSection friction;  // empty without friction cases or a friction curve
   ImpactsSection impacts;    // empty without a file of `planarbench impacts`
+  ValiditySection validity;  // empty without contact rows (report_validity.hpp)
 };
 
 }  // namespace pb::internal

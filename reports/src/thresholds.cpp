@@ -11,6 +11,7 @@
 
 #include "planarbench/did_you_mean.hpp"
 #include "planarbench/errors.hpp"
+#include "planarbench/reports/contact_validity.hpp"
 #include "planarbench/reports/friction_metrics.hpp"
 
 namespace pb {
@@ -25,6 +26,7 @@ const std::set<std::string>& metric_names() {
       "max_penetration", "energy_drift", "constraint_drift", "momentum_drift", "wall_per_sim_s",
       "episode_count"};
     for (const char* f : friction_metric_names()) n.insert(f);  // SPEC §7
+    for (const char* f : validity_metric_names()) n.insert(f);  // SPEC §9
     return n;
   }();
   return names;

@@ -62,6 +62,7 @@
     if (hasCampaign()) nav.appendChild(el('a', { href: '#campaign' }, 'Campaign'));
     if (hasFriction()) nav.appendChild(el('a', { href: '#friction' }, 'Friction'));
     if (hasImpacts()) nav.appendChild(el('a', { href: '#impacts' }, 'Measured impacts'));
+    if (hasValidity()) nav.appendChild(el('a', { href: '#validity' }, 'Physical validity'));
     for (const t of data.tables) nav.appendChild(el('a', { href: '#table-' + slug(t.id) }, t.title));
     if (data.results_file) nav.appendChild(el('a', { href: '#mapping' }, 'Parameter mapping'));
   }
@@ -509,6 +510,27 @@
     main.appendChild(sec);
   }
 
+  // ---- physical validity (SPEC §9) -----------------------------------------
+  function hasValidity() {
+    return Boolean(data.validity && data.validity.table && data.validity.table.rows.length);
+  }
+
+  function renderValidity(main) {
+    if (!hasValidity()) return;
+    const v = data.validity;
+    const sec = el('section', { id: 'validity' });
+    sec.appendChild(el('h2', {}, 'Physical validity'));
+    sec.appendChild(el('p', { class: 'note' }, v.note));
+    const ul = el('ul', { class: 'readings' });
+    for (const line of v.readings) ul.appendChild(el('li', {}, line));
+    sec.appendChild(ul);
+    renderTable(v.table, sec, 'h3');
+    for (const f of v.figures) {
+      sec.appendChild(el('div', { class: 'wp-plot', id: 'validity-' + slug(f.id) }, svgNode(f.svg)));
+    }
+    main.appendChild(sec);
+  }
+
   // ---- parameter mapping ---------------------------------------------------
   function jsonNode(v) {
     if (v === null || typeof v !== 'object') return document.createTextNode(String(v));
@@ -555,6 +577,7 @@
   renderCampaign(main);
   renderFriction(main);
   renderImpacts(main);
+  renderValidity(main);
   for (const t of data.tables) renderTable(t, main);
   if (data.results_file) renderMappings(main);
 

@@ -104,6 +104,13 @@ const frictionSection = reportMd.slice(frictionStart, frictionEnd < 0 ? undefine
 const frictionFigures = (frictionSection.match(/!\[[^\]]*\]\(figures\/[^)]+\.svg\)/g) || []).length;
 check(frictionFigures === 5, `report.md's friction section has 5 figures (block_hold's drift, the friction curve, the block family's three): ${frictionFigures}`);
 check(frictionSection.includes('### Block family'), "report.md's friction section has the block family's table");
+// the physical-validity section (issue 32): block_hold's Coulomb and creep
+// figures, the normal-law residual of the three frictionless cases
+const validityStart = reportMd.indexOf('## Physical validity');
+const validityEnd = reportMd.indexOf('\n## ', validityStart + 1);
+const validitySection = validityStart < 0 ? '' : reportMd.slice(validityStart, validityEnd < 0 ? undefined : validityEnd);
+const validityFigures = (validitySection.match(/!\[[^\]]*\]\(figures\/[^)]+\.svg\)/g) || []).length;
+check(validityFigures === 5, `report.md's physical-validity section has 5 figures (block_hold's Coulomb distance and creep, the law residual of falling_ball, falling_ball_paper, dual_pendulum): ${validityFigures}`);
 const html = path.join(reportDir, 'report.html');
 check(fs.existsSync(html), 'report.html written');
 
@@ -130,9 +137,11 @@ check(fs.existsSync(path.join(reportDir, 'figures', 'falling_ball_fig5.svg')), '
 // and each ok engine's largest position error against the case's yardstick
 // (the analytic run where there is one, else the reference), on the common
 // output grid: the truth the verdict's numbers are checked against
+const casesDir = path.join(path.resolve(args['web-dir']), '..', '..', 'cases');
 const py = spawnSync('/usr/bin/python3', ['-c', [
-  'import h5py, sys, json',
+  'import h5py, sys, json, tomllib',
   'import numpy as np',
+  `cases_dir = ${JSON.stringify(casesDir)}`,
   'f = h5py.File(sys.argv[1], "r")',
   'out = {}',
   'for case in sys.argv[2:]:',
@@ -154,6 +163,26 @@ const py = spawnSync('/usr/bin/python3', ['-c', [
   '    onset = float(ev[0]["onset_time"]) if ev.shape[0] else None',
   '    peaks = {e: max([float(x) for x in g[e]["events"]["peak_force"]] or [0.0]) for e in g if st[e] == "ok"}',
   '    out[case] = {"status": st, "base": base, "error": err, "first_onset": onset, "peak_force": peaks}',
+  // issue 32: each engine's cone violation and stick creep on block_hold,
+  // from the contacts columns and the case file's mu (SPEC §9), formatted as
+  // the report prints them (%.2g); and the rows the validity table has
+  '    pairs = tomllib.load(open(cases_dir + "/" + case + ".toml", "rb")).get("contacts", [])',
+  '    mu = pairs[0].get("friction", 0.0) if pairs else 0.0',
+  '    out[case]["contact_rows"] = {e: int(g[e]["contacts"].shape[0]) for e in g if e != "analytic" and st[e] != "unsupported" and "contacts" in g[e]}',
+  '    if mu > 0:',
+  '        val = {}',
+  '        for e in g:',
+  '            if e == "analytic" or st[e] == "unsupported": continue',
+  '            c = g[e]["contacts"][:]',
+  '            fn, ft, v = c["force_n"], c["tangential_force_n"], c["slip_mps"]',
+  '            ok = np.isfinite(ft) & np.isfinite(v) & (fn > 0)',
+  '            lim = mu * fn[ok]',
+  '            cone = np.maximum(0.0, np.abs(ft[ok]) - lim) / lim',
+  '            inside = (np.abs(v[ok]) <= 1e-3) & (np.abs(ft[ok]) <= (1 - 1e-3) * lim)',
+  '            creep = np.abs(v[ok][inside])',
+  '            val[e] = {"cone": format(float(cone.max()), ".2g") if cone.size else "-",',
+  '                      "creep": format(float(creep.max()), ".2g") if creep.size else "-"}',
+  '        out[case]["validity"] = val',
   'print(json.dumps(out))',
 ].join('\n'), results, ...CASES], { encoding: 'utf8' });
 if (py.status !== 0) fatal(`cannot read the runs with h5py (scripts/setup.sh installs python3-h5py): ${py.stderr}`);
@@ -286,6 +315,25 @@ try {
   const conventionRows = await page.locator('#impacts table').first().locator('tbody tr').count();
   check(conventionRows === 4, `the convention table has a row per sign pair: ${conventionRows}`);
 
+  // the physical-validity section (issue 32): its figures, a row per run and
+  // pair with contact rows, and block_hold's cone and creep as h5py and the
+  // case's mu give them
+  const validityPlots = await page.locator('#validity .wp-plot svg').count();
+  check(validityPlots === validityFigures, `physical-validity section draws its ${validityFigures} figures: ${validityPlots}`);
+  const wantRows = CASES.reduce((n, c) => n + Object.values(truthOf[c].contact_rows).filter((k) => k > 0).length, 0);
+  const validityRows = await page.evaluate(() => [...document.querySelectorAll('#tbl-validity tbody tr')]
+    .map((tr) => [...tr.querySelectorAll('td')].map((td) => td.textContent)));
+  check(validityRows.length === wantRows, `validity table has a row per run with contact rows: ${validityRows.length} of ${wantRows}`);
+  const readings = await page.locator('#validity ul.readings li').count();
+  check(readings >= 1, `validity readings: ${readings} engine lines`);
+  for (const [engine, want] of Object.entries(truthOf.block_hold.validity || {})) {
+    const row = validityRows.find((r) => r[0] === 'block_hold' && r[1] === engine);
+    if (!check(row !== undefined, `validity table has block_hold x ${engine}`)) continue;
+    const first = (cell) => cell.split(' (')[0];
+    check(first(row[4]) === want.cone && first(row[6]) === want.creep,
+      `block_hold x ${engine}: cone ${row[4]}, creep ${row[6]} against h5py's ${want.cone}, ${want.creep}`);
+  }
+
   // tables are there
   for (const id of ['capability', 'timings', 'metrics', 'provenance']) {
     const rows = await page.locator(`#tbl-${id} tbody tr`).count();
@@ -319,6 +367,10 @@ try {
       .map((svg) => { const b = svg.getBoundingClientRect(); return [b.width, b.height, b.right]; }));
     check(friction.length === 5 && friction.every(([w, h, right]) => w > 100 && h > 50 && right <= layout.innerWidth),
       `${size}: friction figures drawn within the width (${JSON.stringify(friction.map((f) => f.map(Math.round)))})`);
+    const validity = await page.evaluate(() => [...document.querySelectorAll('#validity .wp-plot svg')]
+      .map((svg) => { const b = svg.getBoundingClientRect(); return [b.width, b.height, b.right]; }));
+    check(validity.length === validityFigures && validity.every(([w, h, right]) => w > 100 && h > 50 && right <= layout.innerWidth),
+      `${size}: physical-validity figures drawn within the width (${JSON.stringify(validity.map((f) => f.map(Math.round)))})`);
     check(layout.top !== null && layout.top >= 0 && layout.top < layout.innerHeight,
       `${size}: the verdict starts in the first screen (top at ${layout.top} px)`);
     // a laptop sees the whole verdict without scrolling

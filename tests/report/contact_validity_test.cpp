@@ -135,5 +135,128 @@ TEST(ContactValidity, RowsWithoutTheTangentialColumnsAreNotRecordedNotZero) {
   EXPECT_EQ(none[1].samples, 0);
 }
 
+// A disk (body 1) on a fixed half-plane (body 0), pressed along +y: the normal
+// from the ground to the disk is +y, the penetration rate -v_y.
+Case disk_on_ground(const ContactLaw& law) {
+  Case c;
+  c.output_interval_s = kDt;
+  Body ground;
+  ground.name = "ground";
+  ground.shape = HalfPlane{};
+  ground.fixed = true;
+  Body disk;
+  disk.name = "disk";
+  disk.shape = Circle{0.1};
+  disk.mass_kg = 1.0;
+  c.bodies = {ground, disk};
+  ContactPair p;
+  p.name = "ground_disk";
+  p.body_a = 0;
+  p.body_b = 1;
+  p.law = law;
+  c.contacts = {p};
+  return c;
+}
+
+// the disk's trajectory and a row per sample: penetration 1e-3 m, the centre
+// moving down at `vy` (so the rate is -vy), force `fn(i)`
+RunResult disk_run(const std::vector<double>& vy, const std::vector<double>& fn) {
+  RunResult r;
+  BodyTrajectory t;
+  t.name = "disk";
+  for (std::size_t i = 0; i < vy.size(); ++i) {
+    const double time = kDt * static_cast<double>(i);
+    t.time_s.push_back(time);
+    t.position_m.emplace_back(0.0, 0.1 - 1e-3);
+    t.angle_rad.push_back(0.0);
+    t.velocity_mps.emplace_back(0.0, vy[i]);
+    t.angular_velocity_radps.push_back(3.0);  // spin: tangential at the point, no normal rate
+    ContactRow row;
+    row.time_s = time;
+    row.sample.body_a = 0;
+    row.sample.body_b = 1;
+    row.sample.force_n = fn[i];
+    row.sample.penetration_m = 1e-3;
+    row.sample.normal = Vec2(0.0, 1.0);
+    row.sample.point_m = Vec2(0.0, -5e-4);
+    row.sample.tangential_force_n = 0.0;
+    row.sample.slip_mps = 0.0;
+    r.contacts.push_back(row);
+  }
+  r.bodies = {t};
+  return r;
+}
+
+TEST(ContactValidity, TheNormalLawResidualReadsTheRateFromTheBodyStates) {
+  // Kelvin-Voigt K = 1e4 N/m, c = 10 N s/m: at 1 mm approaching at 0.5 m/s
+  // the law gives 10 + 5 = 15 N; separating at 0.5 m/s, 5 N
+  const Case c = disk_on_ground(KelvinVoigt{1e4, 10.0, 0.0});
+  std::vector<double> vy = {-0.5, -0.5, 0.5, 0.5};
+  std::vector<double> fn = {15.0, 15.0, 5.0, 5.0};
+  fn[2] = 5.0 + 1.5;  // 10 % of the pair's peak (15 N) off the law on one sample
+  const PairValidity v = contact_validity(c, disk_run(vy, fn))[0];
+  EXPECT_EQ(v.law_residual.samples, 4);
+  EXPECT_NEAR(v.law_residual.max, 0.1, 1e-14);  // 1.5 / 15 after sums of 1e4 * 1e-3: rounding
+  EXPECT_DOUBLE_EQ(v.law_residual.fraction_above, 0.25);
+  // complementarity: a normal force on a separating contact, F_n (-rate) =
+  // 6.5 N x 0.5 m/s = 3.25 W, then 2.5 W; approaching rows give 0
+  EXPECT_NEAR(v.complementarity_w.max, 3.25, 1e-15);
+  EXPECT_EQ(v.complementarity_w.samples, 4);
+  EXPECT_DOUBLE_EQ(v.complementarity_w.fraction_above, 0.5);
+}
+
+TEST(ContactValidity, LankaraniNikraveshReadsItsApproachSpeedFromTheRunsEpisode) {
+  // F = K delta^1.5 (1 + 0.75 (1 - e^2) rate / approach): K = 1e6, delta =
+  // 1e-3: 31.6228 N elastic; e = 0.5, rate 0.5 m/s of an approach at 1 m/s:
+  // x (1 + 0.75 * 0.75 * 0.5)
+  const Case c = disk_on_ground(LankaraniNikravesh{1e6, 1.5, 0.5, std::nullopt});
+  const double law = 1e6 * std::pow(1e-3, 1.5) * (1.0 + 0.75 * 0.75 * 0.5);
+  RunResult r = disk_run({-0.5, -0.5}, {law, law});
+  ContactEpisode e;
+  e.body_a = 0;
+  e.body_b = 1;
+  e.onset_time_s = 0.0;
+  e.offset_time_s = std::nan("");
+  e.approach_speed_mps = 1.0;
+  r.events = {e};
+  const PairValidity v = contact_validity(c, r)[0];
+  EXPECT_LT(v.law_residual.max, 1e-15);  // the same law from the same doubles: rounding
+  // without the episode the law is its elastic part alone: off by 28 % of it
+  r.events.clear();
+  EXPECT_NEAR(contact_validity(c, r)[0].law_residual.max, 1.0 - 1.0 / (1.0 + 0.28125), 1e-12);
+}
+
+TEST(ContactValidity, AFacedPairHasNoLawResidualAndAMissingBodySampleNone) {
+  Case faced = disk_on_ground(KelvinVoigt{1e4, 10.0, 0.0});
+  faced.bodies[1].shape = Polygon{{Vec2(-0.1, -0.1), Vec2(0.1, -0.1), Vec2(0.1, 0.1), Vec2(-0.1, 0.1)}};
+  const RunResult r = disk_run({-0.5}, {15.0});
+  EXPECT_EQ(contact_validity(faced, r)[0].law_residual.samples, 0);
+  EXPECT_EQ(contact_validity(faced, r)[0].complementarity_w.samples, 1);  // any shape
+  // a row at a time the body was not sampled: no rate, neither series
+  RunResult shifted = r;
+  shifted.contacts[0].time_s = 0.5 * kDt;
+  const PairValidity v = contact_validity(disk_on_ground(KelvinVoigt{1e4, 10.0, 0.0}), shifted)[0];
+  EXPECT_EQ(v.law_residual.samples, 0);
+  EXPECT_EQ(v.complementarity_w.samples, 0);
+}
+
+TEST(ContactValidity, TheGateReadsEachSeriesWorstPairAndLeavesOutWhatNoPairHas) {
+  RunResult r;
+  for (int i = 0; i < 10; ++i) r.contacts.push_back(row(kDt * i, 0, 1, 10.0, 1e-5, -5.5, 0.2));
+  const auto m = validity_metrics(two_pair_case(), r);
+  auto find = [&](const char* name) -> const MetricValue* {
+    for (const auto& x : m) {
+      if (x.metric == name) return &x;
+    }
+    return nullptr;
+  };
+  ASSERT_NE(find("cone_violation"), nullptr);
+  EXPECT_NEAR(find("cone_violation")->error, 0.1, 1e-15);
+  EXPECT_EQ(find("cone_violation")->against, "self");
+  EXPECT_NE(find("cone_violation")->note.find("ground_box"), std::string::npos);
+  EXPECT_EQ(find("stick_creep"), nullptr);   // never inside the cone
+  EXPECT_EQ(find("law_residual"), nullptr);  // no bodies to read a rate from
+}
+
 }  // namespace
 }  // namespace pb

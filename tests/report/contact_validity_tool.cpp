@@ -2,7 +2,7 @@
 // recorded tangential columns, the per-step validity of issue 32
 // (planarbench/reports/contact_validity.hpp) as one Markdown row: cone,
 // dissipation and stick creep (max and p99), force at a distance (max),
-// the dissipation deficit. The measurements in the issue's note come from
+// the dissipation deficit, the normal-law residual and the complementarity. The measurements in the issue's note come from
 // it; it is a tool, not a test.
 #include <cmath>
 #include <cstdio>
@@ -34,8 +34,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::printf("| case | engine | pair | mu | rows | cone max / p99 | dissipation max / p99 | "
-              "stick creep m/s max / p99 | force at a distance N max | deficit J |\n"
-              "|---|---|---|---|---|---|---|---|---|---|\n");
+              "stick creep m/s max / p99 | force at a distance N max | deficit J | "
+              "law residual max / p99 | complementarity W max / p99 |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   try {
     for (int a = 1; a < argc; ++a) {
       const pb::ResultsFile f = pb::read_results_file(argv[a]);
@@ -44,12 +45,13 @@ int main(int argc, char** argv) {
         for (const auto& r : cr.runs) {
           for (const pb::PairValidity& v : pb::contact_validity(c, r)) {
             if (v.samples == v.not_recorded) continue;  // nothing recorded
-            std::printf("| %s | %s | %s | %g | %d | %s | %s | %s | %s | %s |\n", c.name.c_str(),
+            std::printf("| %s | %s | %s | %g | %d | %s | %s | %s | %s | %s | %s | %s |\n", c.name.c_str(),
                         r.engine_name.c_str(), v.pair.c_str(), v.mu, v.samples,
                         series(v.mu > 0.0 ? v.cone : v.frictionless_tangent).c_str(),
                         series(v.dissipation).c_str(), series(v.stick_creep_mps).c_str(),
                         v.force_at_distance_n.samples == 0 ? "0" : num(v.force_at_distance_n.max).c_str(),
-                        num(v.power_deficit_j).c_str());
+                        num(v.power_deficit_j).c_str(), series(v.law_residual).c_str(),
+                        series(v.complementarity_w).c_str());
           }
         }
       }

@@ -53,12 +53,16 @@ class ReportTest : public ::testing::Test {
 TEST_F(ReportTest, WritesPageMarkdownAndFigures) {
   const ReportSummary s = write_report(options("out"));
   EXPECT_EQ(s.figures, 2u);    // Figs 5 and 6
-  EXPECT_EQ(s.svg_files, 3u);  // and Fig 5 zoomed on its episode
+  // and Fig 5 zoomed on its episode, and the physical-validity section's
+  // normal-law residual of the ball (a smooth frictionless pair)
+  EXPECT_EQ(s.svg_files, 4u);
+  EXPECT_EQ(s.validity_figures, 1u);
   EXPECT_GT(s.metrics, 0u);
   EXPECT_EQ(s.checks, 0u);
   for (const char* f :
        {"report.html", "report.md", "figures/falling_ball_fig5.svg",
-        "figures/falling_ball_fig5_episode0.svg", "figures/falling_ball_fig6.svg"}) {
+        "figures/falling_ball_fig5_episode0.svg", "figures/falling_ball_fig6.svg",
+        "figures/falling_ball_law.svg"}) {
     EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / f)) << f;
   }
   const std::string html = internal::read_text_file(dir_ / "out" / "report.html");
@@ -67,7 +71,7 @@ TEST_F(ReportTest, WritesPageMarkdownAndFigures) {
   EXPECT_NE(html.find("uPlot 1.6.32 The MIT License (MIT)"), std::string::npos);
   const std::string md = internal::read_text_file(dir_ / "out" / "report.md");
   for (const char* heading : {"## Capability matrix", "## Timings", "## Metrics", "## Provenance",
-                              "## Parameter mapping"}) {
+                              "## Parameter mapping", "## Physical validity"}) {
     EXPECT_NE(md.find(heading), std::string::npos) << heading;
   }
   EXPECT_NE(md.find("mujoco cannot do X"), std::string::npos);  // from the mapping

@@ -31,14 +31,30 @@ namespace pb {
   return point_velocity(states[k], p);
 }
 
+// m/s, body_b's material point's velocity relative to body_a's at a
+// sample's contact: each at its own point, half the penetration from the
+// midpoint (above); a penetration the engine does not give leaves the midpoint
+[[nodiscard]] inline Vec2 contact_relative_velocity(const Case& c,
+                                                    const std::vector<BodyState>& states,
+                                                    const ContactSample& s) {
+  const double half = std::isfinite(s.penetration_m) ? 0.5 * s.penetration_m : 0.0;  // m
+  return material_point_velocity(c, states, s.body_b, s.point_m - half * s.normal) -
+         material_point_velocity(c, states, s.body_a, s.point_m + half * s.normal);
+}
+
+// m/s, the penetration rate delta_dot = -n . (v_b(p_b) - v_a(p_a)), > 0
+// approaching: the rate the reference's contact law reads
+// (core/reference/include/planarbench/reference/contact_dynamics.hpp)
+[[nodiscard]] inline double penetration_rate_mps(const Case& c, const std::vector<BodyState>& states,
+                                                 const ContactSample& s) {
+  return -contact_relative_velocity(c, states, s).dot(s.normal);
+}
+
 // sets each sample's slip_mps from `states` (index = Case::bodies index)
 inline void fill_slip(const Case& c, const std::vector<BodyState>& states,
                       std::vector<ContactSample>& samples) {
   for (ContactSample& s : samples) {
-    const double half = std::isfinite(s.penetration_m) ? 0.5 * s.penetration_m : 0.0;  // m
-    const Vec2 rel = material_point_velocity(c, states, s.body_b, s.point_m - half * s.normal) -
-                     material_point_velocity(c, states, s.body_a, s.point_m + half * s.normal);
-    s.slip_mps = rel.dot(contact_tangent(s.normal));
+    s.slip_mps = contact_relative_velocity(c, states, s).dot(contact_tangent(s.normal));
   }
 }
 

@@ -64,6 +64,7 @@ struct ReportSummary {
   std::size_t work_precision_cases = 0;  // cases of the sweep file
   std::size_t campaign_cases = 0;        // cases of the campaign table
   std::size_t friction_figures = 0;      // figures of the friction section
+  std::size_t validity_figures = 0;      // figures of the physical-validity section
   std::size_t impacts_figures = 0;       // figures of the measured-impacts section
 };
 
