@@ -33,7 +33,9 @@ ValiditySeries summarise(std::vector<double> v, double floor) {
   return s;
 }
 
-bool same_pair(const ContactSample& s, const ContactPair& p) {
+// a contact sample or an episode of the pair, its bodies either way round
+template <class Touch>
+bool same_pair(const Touch& s, const ContactPair& p) {
   return (s.body_a == p.body_a && s.body_b == p.body_b) ||
          (s.body_a == p.body_b && s.body_b == p.body_a);
 }
@@ -95,15 +97,36 @@ bool smooth_pair(const Case& c, const ContactPair& p) {
 // (Lankarani-Nikravesh's latched delta_dot), 0 when none holds it
 double approach_at(const RunResult& r, const ContactPair& p, double t) {
   for (const ContactEpisode& e : r.events) {
-    const bool pair = (e.body_a == p.body_a && e.body_b == p.body_b) ||
-                      (e.body_a == p.body_b && e.body_b == p.body_a);
     const double off = std::isfinite(e.offset_time_s) ? e.offset_time_s : INFINITY;
-    if (pair && t >= e.onset_time_s && t <= off) return e.approach_speed_mps;
+    if (same_pair(e, p) && t >= e.onset_time_s && t <= off) return e.approach_speed_mps;
   }
   return 0.0;
 }
 
+// the gate's metrics: name, unit and the series whose largest max they are
+struct GateMetric {
+  const char* name;
+  const char* unit;
+  ValiditySeries PairValidity::*series;
+};
+constexpr GateMetric kGateMetrics[] = {
+    {"cone_violation", "1", &PairValidity::cone},
+    {"dissipation_deficit", "1", &PairValidity::dissipation},
+    {"stick_creep", "m/s", &PairValidity::stick_creep_mps},
+    {"force_at_distance", "N", &PairValidity::force_at_distance_n},
+    {"law_residual", "1", &PairValidity::law_residual},
+    {"complementarity", "W", &PairValidity::complementarity_w}};
+
 }  // namespace
+
+const std::vector<const char*>& validity_metric_names() {
+  static const std::vector<const char*> names = [] {
+    std::vector<const char*> n;
+    for (const GateMetric& m : kGateMetrics) n.push_back(m.name);
+    return n;
+  }();
+  return names;
+}
 
 std::vector<ValiditySample> validity_samples(const Case& c, const RunResult& r, std::size_t pair) {
   std::vector<ValiditySample> out;
@@ -158,81 +181,68 @@ std::vector<ValiditySample> validity_samples(const Case& c, const RunResult& r, 
   return out;
 }
 
+PairValidity pair_validity(const Case& c, std::size_t pair,
+                           const std::vector<ValiditySample>& samples) {
+  const ContactPair& p = c.contacts[pair];
+  PairValidity v;
+  v.pair = p.name;
+  v.body_a = p.body_a;
+  v.body_b = p.body_b;
+  v.mu = p.friction;
+  std::vector<double> cone, tangent, dissipation, creep, distance, law, complementarity;
+  auto keep = [](std::vector<double>& into, double x) {
+    if (!std::isnan(x)) into.push_back(x);
+  };
+  double deficit = 0.0;
+  bool any_sliding_interval = false;
+  const ValiditySample* previous = nullptr;  // the pair's last recorded sample
+  for (const ValiditySample& s : samples) {
+    ++v.samples;
+    keep(distance, s.force_at_distance_n);
+    keep(law, s.law_residual);
+    keep(complementarity, s.complementarity_w);
+    if (!s.recorded) {
+      ++v.not_recorded;
+      previous = nullptr;
+      continue;
+    }
+    keep(cone, s.cone);
+    keep(tangent, s.frictionless_tangent);
+    keep(dissipation, s.dissipation);
+    keep(creep, s.stick_creep_mps);
+    if (previous != nullptr && previous->sliding && s.sliding) {
+      const double dt = s.time_s - previous->time_s;
+      if (dt > 0.0 && dt <= 1.5 * c.output_interval_s) {
+        deficit += 0.5 * (previous->power_w + s.power_w) * dt;
+        any_sliding_interval = true;
+      }
+    }
+    previous = &s;
+  }
+  v.cone = summarise(std::move(cone), kRelativeFloor);
+  v.frictionless_tangent = summarise(std::move(tangent), kRelativeFloor);
+  v.dissipation = summarise(std::move(dissipation), kRelativeFloor);
+  v.stick_creep_mps = summarise(std::move(creep), kCreepFloor_mps);
+  v.force_at_distance_n = summarise(std::move(distance), 0.0);
+  v.law_residual = summarise(std::move(law), kRelativeFloor);
+  v.complementarity_w = summarise(std::move(complementarity), 0.0);
+  if (any_sliding_interval) v.power_deficit_j = deficit;
+  return v;
+}
+
 std::vector<PairValidity> contact_validity(const Case& c, const RunResult& r) {
   std::vector<PairValidity> out;
   for (std::size_t k = 0; k < c.contacts.size(); ++k) {
-    const ContactPair& p = c.contacts[k];
-    PairValidity v;
-    v.pair = p.name;
-    v.body_a = p.body_a;
-    v.body_b = p.body_b;
-    v.mu = p.friction;
-    std::vector<double> cone, tangent, dissipation, creep, distance, law, complementarity;
-    auto keep = [](std::vector<double>& into, double x) {
-      if (!std::isnan(x)) into.push_back(x);
-    };
-    double deficit = 0.0;
-    bool any_sliding_interval = false;
-    const ValiditySample* previous = nullptr;  // the pair's last recorded sample
-    for (const ValiditySample& s : validity_samples(c, r, k)) {
-      ++v.samples;
-      keep(distance, s.force_at_distance_n);
-      keep(law, s.law_residual);
-      keep(complementarity, s.complementarity_w);
-      if (!s.recorded) {
-        ++v.not_recorded;
-        previous = nullptr;
-        continue;
-      }
-      keep(cone, s.cone);
-      keep(tangent, s.frictionless_tangent);
-      keep(dissipation, s.dissipation);
-      keep(creep, s.stick_creep_mps);
-      if (previous != nullptr && previous->sliding && s.sliding) {
-        const double dt = s.time_s - previous->time_s;
-        if (dt > 0.0 && dt <= 1.5 * c.output_interval_s) {
-          deficit += 0.5 * (previous->power_w + s.power_w) * dt;
-          any_sliding_interval = true;
-        }
-      }
-      previous = &s;
-    }
-    v.cone = summarise(std::move(cone), kRelativeFloor);
-    v.frictionless_tangent = summarise(std::move(tangent), kRelativeFloor);
-    v.dissipation = summarise(std::move(dissipation), kRelativeFloor);
-    v.stick_creep_mps = summarise(std::move(creep), kCreepFloor_mps);
-    v.force_at_distance_n = summarise(std::move(distance), 0.0);
-    v.law_residual = summarise(std::move(law), kRelativeFloor);
-    v.complementarity_w = summarise(std::move(complementarity), 0.0);
-    if (any_sliding_interval) v.power_deficit_j = deficit;
-    out.push_back(std::move(v));
+    out.push_back(pair_validity(c, k, validity_samples(c, r, k)));
   }
   return out;
-}
-
-const std::vector<const char*>& validity_metric_names() {
-  static const std::vector<const char*> names = {"cone_violation",    "dissipation_deficit",
-                                                 "stick_creep",       "force_at_distance",
-                                                 "law_residual",      "complementarity"};
-  return names;
 }
 
 std::vector<MetricValue> validity_metrics(const Case& c, const RunResult& r) {
   std::vector<MetricValue> out;
   if (r.status == RunStatus::unsupported) return out;
   const std::vector<PairValidity> pairs = contact_validity(c, r);
-  struct Pick {
-    const char* name;
-    const char* unit;
-    const ValiditySeries PairValidity::*series;
-  };
-  static const Pick picks[] = {{"cone_violation", "1", &PairValidity::cone},
-                               {"dissipation_deficit", "1", &PairValidity::dissipation},
-                               {"stick_creep", "m/s", &PairValidity::stick_creep_mps},
-                               {"force_at_distance", "N", &PairValidity::force_at_distance_n},
-                               {"law_residual", "1", &PairValidity::law_residual},
-                               {"complementarity", "W", &PairValidity::complementarity_w}};
-  for (const Pick& k : picks) {
+  for (const GateMetric& k : kGateMetrics) {
     const PairValidity* worst = nullptr;
     for (const PairValidity& v : pairs) {
       const ValiditySeries& s = v.*k.series;

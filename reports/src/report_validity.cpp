@@ -106,10 +106,17 @@ LinePlot::Line bucketed(const std::string& engine, std::size_t index, double t_e
   return line;
 }
 
-// a case's per-step figure of one quantity, or none when no run has a value;
-// scatter: points alone
-void add_figure(const Case& c, const CaseRuns& cr, const char* suffix, const std::string& title,
-                const std::string& y_label,
+// one run's samples of each pair of its case, computed once for the table and
+// the figures
+struct RunSamples {
+  const RunResult* run = nullptr;
+  std::vector<std::vector<ValiditySample>> pairs;  // index = Case::contacts index
+};
+
+// a case's per-step figure of one quantity, or none (false) when no run has a
+// value; scatter: points alone
+bool add_figure(const Case& c, const std::vector<RunSamples>& runs, const char* suffix,
+                const std::string& title, const std::string& y_label,
                 double (*value)(const ValiditySample&), bool (*wanted)(const Case&, std::size_t),
                 bool scatter, std::vector<CampaignFigure>& out) {
   LinePlot plot;
@@ -118,19 +125,19 @@ void add_figure(const Case& c, const CaseRuns& cr, const char* suffix, const std
   plot.y_label = y_label;
   plot.y_log = true;
   std::size_t index = 0;
-  for (const auto& r : cr.runs) {
-    if (r.engine_name == "analytic" || r.status == RunStatus::unsupported) continue;
+  for (const RunSamples& r : runs) {
     std::vector<std::pair<double, double>> points;
-    for (std::size_t k = 0; k < c.contacts.size(); ++k) {
+    for (std::size_t k = 0; k < r.pairs.size(); ++k) {
       if (!wanted(c, k)) continue;
-      for (const ValiditySample& s : validity_samples(c, r, k)) points.emplace_back(s.time_s, value(s));
+      for (const ValiditySample& s : r.pairs[k]) points.emplace_back(s.time_s, value(s));
     }
-    LinePlot::Line line = bucketed(r.engine_name, index++, c.duration_s, points);
+    LinePlot::Line line = bucketed(r.run->engine_name, index++, c.duration_s, points);
     line.scatter = scatter;
     if (!line.x.empty()) plot.lines.push_back(std::move(line));
   }
-  if (plot.lines.empty()) return;
+  if (plot.lines.empty()) return false;
   out.push_back({file_safe(c.name + suffix), plot.title, line_plot_svg(plot)});
+  return true;
 }
 
 bool friction_pair(const Case& c, std::size_t k) { return c.contacts[k].has_friction(); }
@@ -161,12 +168,18 @@ ValiditySection validity_section(const std::vector<Case>& cases, const ResultsFi
                      "at a distance (N)", "law", "complementarity (W)"};
   std::map<std::string, EngineWorst> worst;
   std::vector<std::string> engines;  // in order of first appearance
+  int coulomb_figures = 0;           // the cases with friction drawn
   for (std::size_t i = 0; i < cases.size() && i < results.cases.size(); ++i) {
     const Case& c = cases[i];
-    const CaseRuns& cr = results.cases[i];
-    for (const auto& r : cr.runs) {
+    std::vector<RunSamples> runs;
+    for (const auto& r : results.cases[i].runs) {
       if (r.engine_name == "analytic" || r.status == RunStatus::unsupported) continue;
-      for (const PairValidity& v : contact_validity(c, r)) {
+      RunSamples rs{&r, {}};
+      for (std::size_t k = 0; k < c.contacts.size(); ++k) {
+        rs.pairs.push_back(validity_samples(c, r, k));
+      }
+      for (std::size_t k = 0; k < c.contacts.size(); ++k) {
+        const PairValidity v = pair_validity(c, k, rs.pairs[k]);
         if (v.samples == 0) continue;
         if (worst.find(r.engine_name) == worst.end()) engines.push_back(r.engine_name);
         EngineWorst& w = worst[r.engine_name];
@@ -183,12 +196,14 @@ ValiditySection validity_section(const std::vector<Case>& cases, const ResultsFi
                                 max_p99(v.law_residual), max_p99(v.complementarity_w)});
         s.table.row_status.emplace_back();
       }
+      runs.push_back(std::move(rs));
     }
-    add_figure(c, cr, "_coulomb", c.name + ": friction's distance from Coulomb per sample",
-               "fraction of mu F_n", coulomb_distance, friction_pair, false, s.figures);
-    add_figure(c, cr, "_creep", c.name + ": slip while the load is inside the cone, per sample",
+    coulomb_figures +=
+        add_figure(c, runs, "_coulomb", c.name + ": friction's distance from Coulomb per sample",
+                   "fraction of mu F_n", coulomb_distance, friction_pair, false, s.figures) ? 1 : 0;
+    add_figure(c, runs, "_creep", c.name + ": slip while the load is inside the cone, per sample",
                "|v_t| (m/s)", stick_creep, friction_pair, false, s.figures);
-    add_figure(c, cr, "_law", c.name + ": normal-law residual per sample",
+    add_figure(c, runs, "_law", c.name + ": normal-law residual per sample",
                "|F_n - F_law| / peak F_n", law_residual, frictionless_pair,
                true,  // impacts: points, no line across the flights between them
                s.figures);
@@ -206,11 +221,7 @@ ValiditySection validity_section(const std::vector<Case>& cases, const ResultsFi
         "while the load is inside the cone (a stick's creep), the normal-law residual on the "
         "cases without friction; each line is the largest value per "
         "1/{} of the run, values below {:g} drawn at it.",
-        std::count_if(s.figures.begin(), s.figures.end(),
-                      [](const CampaignFigure& f) {
-                        return f.id.size() > 8 && f.id.compare(f.id.size() - 8, 8, "_coulomb") == 0;
-                      }),
-        kBuckets, kPlotFloor);
+        coulomb_figures, kBuckets, kPlotFloor);
   }
   return s;
 }

@@ -473,6 +473,13 @@
     main.appendChild(sec);
   }
 
+  // a section's figures (SVG text), each in a box with the id prefix + its id
+  function appendFigures(sec, figures, prefix) {
+    for (const f of figures) {
+      sec.appendChild(el('div', { class: 'wp-plot', id: prefix + slug(f.id) }, svgNode(f.svg)));
+    }
+  }
+
   // ---- friction (SPEC §7) ----------------------------------------------------
   function hasFriction() {
     return Boolean(data.friction && data.friction.figures.length);
@@ -484,9 +491,7 @@
     const sec = el('section', { id: 'friction' });
     sec.appendChild(el('h2', {}, 'Friction'));
     sec.appendChild(el('p', { class: 'note' }, fr.note));
-    for (const f of fr.figures) {
-      sec.appendChild(el('div', { class: 'wp-plot', id: 'friction-' + slug(f.id) }, svgNode(f.svg)));
-    }
+    appendFigures(sec, fr.figures, 'friction-');
     if (fr.curve && fr.curve.rows.length) renderTable(fr.curve, sec, 'h3');
     if (fr.family && fr.family.rows.length) renderTable(fr.family, sec, 'h3');
     main.appendChild(sec);
@@ -504,9 +509,7 @@
     sec.appendChild(el('h2', {}, 'Measured impacts'));
     sec.appendChild(el('p', { class: 'note' }, im.note));
     for (const t of im.tables) renderTable(t, sec, 'h3');
-    for (const f of im.figures) {
-      sec.appendChild(el('div', { class: 'wp-plot', id: 'impacts-' + slug(f.id) }, svgNode(f.svg)));
-    }
+    appendFigures(sec, im.figures, 'impacts-');
     main.appendChild(sec);
   }
 
@@ -525,9 +528,7 @@
     for (const line of v.readings) ul.appendChild(el('li', {}, line));
     sec.appendChild(ul);
     renderTable(v.table, sec, 'h3');
-    for (const f of v.figures) {
-      sec.appendChild(el('div', { class: 'wp-plot', id: 'validity-' + slug(f.id) }, svgNode(f.svg)));
-    }
+    appendFigures(sec, v.figures, 'validity-');
     main.appendChild(sec);
   }
 

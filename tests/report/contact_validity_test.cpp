@@ -9,6 +9,8 @@
 
 #include <cmath>
 
+#include "body_on_ground.hpp"
+
 namespace pb {
 namespace {
 
@@ -138,24 +140,7 @@ TEST(ContactValidity, RowsWithoutTheTangentialColumnsAreNotRecordedNotZero) {
 // A disk (body 1) on a fixed half-plane (body 0), pressed along +y: the normal
 // from the ground to the disk is +y, the penetration rate -v_y.
 Case disk_on_ground(const ContactLaw& law) {
-  Case c;
-  c.output_interval_s = kDt;
-  Body ground;
-  ground.name = "ground";
-  ground.shape = HalfPlane{};
-  ground.fixed = true;
-  Body disk;
-  disk.name = "disk";
-  disk.shape = Circle{0.1};
-  disk.mass_kg = 1.0;
-  c.bodies = {ground, disk};
-  ContactPair p;
-  p.name = "ground_disk";
-  p.body_a = 0;
-  p.body_b = 1;
-  p.law = law;
-  c.contacts = {p};
-  return c;
+  return test::body_on_ground("disk_case", "disk", Circle{0.1}, 0.0, law);
 }
 
 // the disk's trajectory and a row per sample: penetration 1e-3 m, the centre
@@ -200,7 +185,7 @@ TEST(ContactValidity, TheNormalLawResidualReadsTheRateFromTheBodyStates) {
   EXPECT_DOUBLE_EQ(v.law_residual.fraction_above, 0.25);
   // complementarity: a normal force on a separating contact, F_n (-rate) =
   // 6.5 N x 0.5 m/s = 3.25 W, then 2.5 W; approaching rows give 0
-  EXPECT_NEAR(v.complementarity_w.max, 3.25, 1e-15);
+  EXPECT_NEAR(v.complementarity_w.max, 3.25, 1e-15);  // 6.5 x (-(-0.5)): one product, rounding only
   EXPECT_EQ(v.complementarity_w.samples, 4);
   EXPECT_DOUBLE_EQ(v.complementarity_w.fraction_above, 0.5);
 }
@@ -223,6 +208,7 @@ TEST(ContactValidity, LankaraniNikraveshReadsItsApproachSpeedFromTheRunsEpisode)
   EXPECT_LT(v.law_residual.max, 1e-15);  // the same law from the same doubles: rounding
   // without the episode the law is its elastic part alone: off by 28 % of it
   r.events.clear();
+  // 1e-12: K delta^1.5 through pow, times 1.28125, and a quotient: a few ulp of 1
   EXPECT_NEAR(contact_validity(c, r)[0].law_residual.max, 1.0 - 1.0 / (1.0 + 0.28125), 1e-12);
 }
 
@@ -251,7 +237,7 @@ TEST(ContactValidity, TheGateReadsEachSeriesWorstPairAndLeavesOutWhatNoPairHas) 
     return nullptr;
   };
   ASSERT_NE(find("cone_violation"), nullptr);
-  EXPECT_NEAR(find("cone_violation")->error, 0.1, 1e-15);
+  EXPECT_NEAR(find("cone_violation")->error, 0.1, 1e-15);  // (5.5 - 5) / 5: rounding only
   EXPECT_EQ(find("cone_violation")->against, "self");
   EXPECT_NE(find("cone_violation")->note.find("ground_box"), std::string::npos);
   EXPECT_EQ(find("stick_creep"), nullptr);   // never inside the cone

@@ -8,32 +8,17 @@
 
 #include <string>
 
+#include "body_on_ground.hpp"
+
 namespace pb::internal {
 namespace {
 
 constexpr double kDt = 1e-3;  // s, the output interval
 
 Case block_case() {
-  Case c;
-  c.name = "slab";
-  c.duration_s = 0.1;
-  c.output_interval_s = kDt;
-  Body ground;
-  ground.name = "ground";
-  ground.shape = HalfPlane{};
-  ground.fixed = true;
-  Body block;
-  block.name = "block";
-  block.shape = Polygon{{Vec2(-0.1, -0.1), Vec2(0.1, -0.1), Vec2(0.1, 0.1), Vec2(-0.1, 0.1)}};
-  block.mass_kg = 1.0;
-  c.bodies = {ground, block};
-  ContactPair p;
-  p.name = "ground_block";
-  p.body_a = 0;
-  p.body_b = 1;
-  p.friction = 0.5;
-  c.contacts = {p};
-  return c;
+  return test::body_on_ground(
+      "slab", "block", Polygon{{Vec2(-0.1, -0.1), Vec2(0.1, -0.1), Vec2(0.1, 0.1), Vec2(-0.1, 0.1)}},
+      0.5, KelvinVoigt{});
 }
 
 // 100 rows of F_n = 10 N: sliding at 0.2 m/s with F_t = -mu F_n but one row at

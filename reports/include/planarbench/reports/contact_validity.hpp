@@ -105,6 +105,10 @@ struct ValiditySample {
 [[nodiscard]] std::vector<ValiditySample> validity_samples(const Case& c, const RunResult& r,
                                                            std::size_t pair);
 
+// A pair's entry from its samples (validity_samples(c, r, pair)).
+[[nodiscard]] PairValidity pair_validity(const Case& c, std::size_t pair,
+                                         const std::vector<ValiditySample>& samples);
+
 // One entry per pair of the case (in its order), from r.contacts.
 [[nodiscard]] std::vector<PairValidity> contact_validity(const Case& c, const RunResult& r);
 
