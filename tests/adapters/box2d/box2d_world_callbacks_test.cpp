@@ -5,9 +5,16 @@
 #include <box2d/b2_world.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <string>
+
 #include "box2d_frame.hpp"
 #include "box2d_geometry.hpp"
 #include "box2d_test_cases.hpp"
+#include "planarbench/adapters/box2d_engine.hpp"
+#include "planarbench/case_loader.hpp"
+#include "planarbench/runner.hpp"
 
 namespace pb::internal::box2d {
 namespace {
@@ -179,6 +186,54 @@ TEST(Box2dWorldCallbacks, PairFrictionIsSetOnItsContacts) {
   EXPECT_NEAR(static_cast<double>(bodies[1]->GetLinearVelocity().x), 4.0 / 3.0, 2.4e-4);
   // and it rolls: omega R = -v
   EXPECT_NEAR(static_cast<double>(bodies[1]->GetAngularVelocity()) * 0.2, -4.0 / 3.0, 2.4e-4);
+}
+
+
+// The mechanism behind Box2D's cone bands (cases/thresholds.toml; README,
+// Per-step physical validity), row by row on the shipped sliding cases: the
+// friction the listener sums is clamped by friction x the normal impulses of
+// the velocity iteration before the last, so |F_t| - mu F_n is the float
+// friction's rounding plus mu times the normal impulse's last change, which
+// only the rounding of the body's normal velocity moves: at most
+// 6 P u V / (g_n h) with V = |v_x| + |v_y| + |w| r_max at that row (not the
+// run's largest, as the gate takes it), P the points. A clamp taken from a
+// stale impulse or a friction mixed off mu would leave this by orders.
+TEST(Box2dFrictionClamp, ConeResidualIsTheNormalVelocitysRounding) {
+  constexpr double u = 5.960464477539063e-08;  // float32 unit roundoff 2^-24
+  constexpr double h = 1e-4;                   // s, Box2D's default step here
+  struct Slide {
+    const char* file;
+    double mu, g_n, r_max;
+    int points;
+  };
+  const double g = 9.8066;
+  for (const Slide& sl : {Slide{"disk_slip", 0.1, g * std::cos(M_PI / 6), 0.25, 2},
+                          Slide{"block_slide", 0.5, g * std::cos(std::atan(0.55)),
+                                std::hypot(0.2, 0.02), 4},
+                          Slide{"block_stop", 0.4, g, std::hypot(0.2, 0.02), 4}}) {
+    const Case c = load_case(std::string(PB_CASES_DIR) + "/" + sl.file + ".toml");
+    auto e = make_box2d_engine();
+    const RunResult r = run_engine(*e, c, {});
+    ASSERT_EQ(r.status, RunStatus::ok) << r.reason;
+    const BodyTrajectory& b = r.bodies.front();
+    int rows = 0, over_float = 0;
+    double worst = 0.0;  // residual in units of u V / (g_n h)
+    for (const ContactRow& row : r.contacts) {
+      const ContactSample& s = row.sample;
+      if (!(s.force_n > 0.0)) continue;
+      const auto k = static_cast<std::size_t>(std::lround(row.time_s / h));
+      if (k >= b.time_s.size()) continue;
+      const double v = std::abs(b.velocity_mps[k].x()) + std::abs(b.velocity_mps[k].y()) +
+                       std::abs(b.angular_velocity_radps[k]) * sl.r_max;
+      const double excess = (std::abs(s.tangential_force_n) - sl.mu * s.force_n) / (sl.mu * s.force_n);
+      ++rows;
+      if (excess > 2 * u) ++over_float;
+      if (v > 0.0) worst = std::max(worst, (excess - 2 * u) / (u * v / (sl.g_n * h)));
+    }
+    EXPECT_GT(rows, 1000) << sl.file;
+    EXPECT_GT(over_float, 0) << sl.file << ": the clamp's lag is seen";
+    EXPECT_LE(worst, 6.0 * sl.points) << sl.file;
+  }
 }
 
 }  // namespace
