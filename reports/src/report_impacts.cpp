@@ -20,6 +20,12 @@ std::string number(const Json& v, const char* format = "{:.4f}") {
   return v.is_null() ? std::string("n/a") : fmt::format(fmt::runtime(format), v.get<double>());
 }
 
+// a summary's key that files written before it lack (issue 34's e_F): "n/a"
+std::string optional_number(const Json& summary, const char* key) {
+  const auto v = summary.find(key);
+  return v == summary.end() ? std::string("n/a") : number(*v);
+}
+
 std::string parameters_text(const Json& model, const Json& values) {
   std::string s;
   const auto& specs = model.at("parameters");
@@ -97,8 +103,11 @@ ImpactsSection section_of(const CampaignTable& t, const std::string& file) {
       "k = {} m). Each engine runs every impact as a case: the ellipse started on the ballistic "
       "arc that reaches the measured pre-impact state at the touch, read once the contact has "
       "ended, carried back ballistically to the touch. Error eps = ||v_pred - v_meas||_M / "
-      "||v_meas - v_pre||_M with M = diag(m, m, m k^2): predicting no impact scores 1. {} The "
-      "stored predictions are the dataset's own, judged as given (its README finds them computed "
+      "||v_meas - v_pre||_M with M = diag(m, m, m k^2): predicting no impact scores 1; beside it the "
+      "published metric e_F = ||v_pred - v_meas||_M / ||v_meas||_M (Fazeli et al., CoRL 2017: "
+      "relative to the post-impact velocity, so smaller for the same miss; means do not convert) "
+      "and the spin's own |theta'_pred - theta'_meas| / |theta'_meas - theta'_pre|, which the "
+      "M-norm hardly sees. {} The stored predictions are the dataset's own, judged as given (its README finds them computed "
       "in the angle convention that does not conserve the momentum). Wall times on the machine "
       "in the provenance.",
       data.at("impacts").get<std::size_t>(), data.at("path").get<std::string>(),
@@ -135,7 +144,8 @@ ImpactsSection section_of(const CampaignTable& t, const std::string& file) {
                          "parameters: the whole-file fit. x/rigid: the median against the rigid "
                          "baseline's.";
   models.columns = {"model", "kind", "representation", "parameters", "eps median", "x rigid",
-                    "eps mean", "eps p90", "|dx'| median (m/s)", "|dy'| median (m/s)",
+                    "eps mean", "eps p90", "e_F median", "e_F mean", "e_F p90",
+                    "spin eps median", "|dx'| median (m/s)", "|dy'| median (m/s)",
                     "|dtheta'| median (rad/s)", "failed", "wall (s)"};
   for (const auto& m : d.at("models")) {
     if (!m.contains(judged)) continue;
@@ -148,7 +158,9 @@ ImpactsSection section_of(const CampaignTable& t, const std::string& file) {
          fit ? parameters_text(m, fit->at("parameters")) : "-", number(j.at("eps_median")),
          std::isfinite(rigid_median) && std::isfinite(median) ? fmt::format("{:.2f}", median / rigid_median)
                                                               : "n/a",
-         number(j.at("eps_mean")), number(j.at("eps_p90")), number(j.at("abs_error_vx_median_mps")),
+         number(j.at("eps_mean")), number(j.at("eps_p90")), optional_number(j, "e_f_median"),
+         optional_number(j, "e_f_mean"), optional_number(j, "e_f_p90"),
+         optional_number(j, "spin_eps_median"), number(j.at("abs_error_vx_median_mps")),
          number(j.at("abs_error_vy_median_mps")), number(j.at("abs_error_w_median_radps"), "{:.3f}"),
          fmt::format("{} of {}", j.at("failed").get<int>(), j.at("impacts").get<int>()),
          fmt::format("{:.1f}", m.at("wall_time_s").get<double>())});

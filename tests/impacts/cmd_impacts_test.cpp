@@ -95,6 +95,61 @@ TEST(CmdImpacts, FitThenScoreFrozenParametersOnAnotherFile) {
   EXPECT_LT(s.at("description").at("models").at(2).at("scored").at("eps_median").get<double>(), 0.05);
 }
 
+// Issue 34: every judged impact also scored in the published metric e_F
+// (relative to the post-impact velocity) and by its spin alone; the columns
+// equal numpy's recomputation from the rows' own velocity columns
+// (read_study.py), the summaries' medians numpy's medians of the columns, and
+// per impact e_F / eps = ||v+ - v-||_M / ||v+||_M, so their order follows.
+TEST(CmdImpacts, EveryImpactIsAlsoScoredInThePublishedMetric) {
+  const fs::path dir = fresh_dir("e_f");
+  const fs::path train = impacts_file(dir, "train.mat", 1);
+  const Finished fit = impacts("fit --data " + train.string() + " --out " + (dir / "fit.h5").string() + " " + kQuick);
+  ASSERT_EQ(fit.exit.code, 0) << fit.err;
+  // the command's table (run_shell captures stdout and stderr) shows both
+  const Finished shown = run_shell(std::string(PB_EXE) + " impacts fit --data " + train.string() +
+                                   " --out " + (dir / "fit2.h5").string() +
+                                   " --engine none --folds 2 --max-evaluations 4");
+  ASSERT_EQ(shown.exit.code, 0) << shown.err;
+  EXPECT_NE(shown.err.find("e_F med"), std::string::npos) << shown.err;
+  EXPECT_NE(shown.err.find("spin med"), std::string::npos) << shown.err;
+
+  const nlohmann::json f = read_study(dir / "fit.h5");
+  ASSERT_TRUE(f.contains("e_f")) << "no e_f column";
+  const auto& e_f = f.at("e_f");
+  const auto& e_f_numpy = f.at("e_f_numpy");
+  ASSERT_EQ(e_f.size(), f.at("eps").size());
+  int compared = 0;
+  for (std::size_t i = 0; i < e_f.size(); ++i) {
+    if (e_f.at(i).is_null() || e_f_numpy.at(i).is_null()) {
+      EXPECT_EQ(e_f.at(i).is_null(), e_f_numpy.at(i).is_null()) << i;
+      continue;
+    }
+    // 1e-12: two evaluations of one formula in doubles, a few roundings of O(1)
+    // terms apart
+    EXPECT_NEAR(e_f.at(i).get<double>(), e_f_numpy.at(i).get<double>(), 1e-12) << i;
+    if (!f.at("spin_eps").at(i).is_null()) {
+      EXPECT_NEAR(f.at("spin_eps").at(i).get<double>(), f.at("spin_eps_numpy").at(i).get<double>(),
+                  1e-12 * std::max(1.0, f.at("spin_eps_numpy").at(i).get<double>()))
+          << i;
+    }
+    ++compared;
+  }
+  EXPECT_GT(compared, 100);
+  for (const auto& m : f.at("description").at("models")) {
+    const std::string name = m.at("name").get<std::string>();
+    const auto& cv = m.at("cross_validated");
+    for (const char* key : {"e_f_median", "e_f_mean", "e_f_p90", "spin_eps_median", "spin_eps_mean",
+                            "spin_eps_p90", "abs_error_vx_p90_mps", "abs_error_w_p90_radps"}) {
+      EXPECT_TRUE(cv.contains(key)) << name << " " << key;
+    }
+    if (f.at("e_f_median_numpy").contains(name)) {
+      // the same order statistics of the same doubles: exactly equal
+      EXPECT_EQ(cv.at("e_f_median").get<double>(), f.at("e_f_median_numpy").at(name).get<double>())
+          << name;
+    }
+  }
+}
+
 TEST(CmdImpacts, ScoringTheFileFittedToIsLabelledInSample) {
   const fs::path dir = fresh_dir("in_sample");
   const fs::path train = impacts_file(dir, "train.mat", 1);

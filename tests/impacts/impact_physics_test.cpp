@@ -80,6 +80,25 @@ TEST(ImpactError, NoImpactScoresOneAndTheMeasuredStateZero) {
               pb::impact_eps(kObject, slide_miss, before, after), 1e-15);
 }
 
+// e_F (Fazeli et al., CoRL 2017) is relative to the post-impact velocity,
+// eps to the velocity change: a drop from (0, -2, 0) bouncing to (0, 1, 4)
+// predicted (0, 0.5, 3) misses by ||(0, -0.5, -1)||_M, so with k the
+// gyration radius e_F = sqrt(0.25 + k^2) / sqrt(1 + 16 k^2) and eps =
+// sqrt(0.25 + k^2) / sqrt(9 + 16 k^2); the spin misses 1 of its change 4.
+TEST(ImpactError, PublishedMetricIsRelativeToThePostImpactVelocity) {
+  const std::array<double, 3> before = {0.0, -2.0, 0.0};
+  const std::array<double, 3> after = {0.0, 1.0, 4.0};
+  const std::array<double, 3> predicted = {0.0, 0.5, 3.0};
+  const double k2 = kObject.gyration_radius_m * kObject.gyration_radius_m;
+  const pb::ImpactScore s = pb::impact_score(kObject, predicted, before, after);
+  EXPECT_NEAR(s.e_f, std::sqrt(0.25 + k2) / std::sqrt(1.0 + 16.0 * k2), 1e-15);
+  EXPECT_NEAR(s.eps, std::sqrt(0.25 + k2) / std::sqrt(9.0 + 16.0 * k2), 1e-15);
+  EXPECT_EQ(s.eps, pb::impact_eps(kObject, predicted, before, after));  // one definition
+  EXPECT_DOUBLE_EQ(s.spin_eps, 0.25);
+  // predicting rest scores e_F = 1, as predicting no impact scores eps = 1
+  EXPECT_DOUBLE_EQ(pb::impact_score(kObject, {0.0, 0.0, 0.0}, before, after).e_f, 1.0);
+}
+
 TEST(ImpactError, FailuresRankAboveEveryNumber) {
   const double nan = std::nan("");
   EXPECT_EQ(pb::quantile({3.0, 1.0, 2.0}, 0.5), 2.0);

@@ -94,6 +94,16 @@ const writeMat = spawnSync('/usr/bin/python3', [path.join(path.resolve(args['web
 if (writeMat.status !== 0) fatal(`write_mat.py failed: ${writeMat.stderr}`);
 run(['impacts', 'fit', '--data', impactsMat, '--engine', 'box2d', '--folds', '2', '--max-evaluations', '3',
   '--out', path.join(work, 'impacts_fit.h5'), '--quiet'], [0]);
+// each model's median e_F, by numpy from the file's e_f column (issue 34)
+const efPy = spawnSync('/usr/bin/python3', ['-c', [
+  'import h5py, json, numpy as np, sys',
+  'r = h5py.File(sys.argv[1], "r")["campaign"]["runs"]',
+  'eng = np.array([e.decode() if isinstance(e, bytes) else str(e) for e in r["engine"][()]])',
+  'ef = np.asarray(r["metric"]["e_f"][()], dtype=float)',
+  'print(json.dumps({e: float(np.median(ef[eng == e])) for e in sorted(set(eng)) if np.all(np.isfinite(ef[eng == e]))}))',
+].join('\n'), path.join(work, 'impacts_fit.h5')], { encoding: 'utf8' });
+if (efPy.status !== 0) { console.error(efPy.stderr); process.exit(1); }
+const impactsEf = JSON.parse(efPy.stdout);
 run(['report', results, '--campaign', path.join(work, 'friction_curve.h5'),
   '--campaign', path.join(work, 'block_family.h5'), '--impacts', path.join(work, 'impacts_fit.h5'),
   '--out', reportDir], [0]);
@@ -314,6 +324,24 @@ try {
   check(impactTables === 3, `measured-impacts section has its 3 tables: ${impactTables}`);
   const conventionRows = await page.locator('#impacts table').first().locator('tbody tr').count();
   check(conventionRows === 4, `the convention table has a row per sign pair: ${conventionRows}`);
+  // both metrics (issue 34): each model's e_F median as numpy gives it from
+  // the fit file's e_f column (h5py), beside eps
+  const modelTable = await page.evaluate(() => {
+    const t = document.querySelector('#tbl-impacts_models');
+    if (!t) return null;
+    return { head: [...t.querySelectorAll('thead th')].map((th) => th.textContent),
+      rows: [...t.querySelectorAll('tbody tr')].map((tr) => [...tr.querySelectorAll('td')].map((td) => td.textContent)) };
+  });
+  if (check(modelTable !== null, 'the impacts models table is there')) {
+    const col = modelTable.head.indexOf('e_F median');
+    check(col > 0 && modelTable.head.includes('eps median') && modelTable.head.includes('spin eps median'),
+      `the models table shows eps, e_F and the spin's error: ${modelTable.head.join(' | ')}`);
+    for (const [model, want] of Object.entries(impactsEf)) {
+      const row = modelTable.rows.find((r) => r[0] === model);
+      if (!check(row !== undefined, `models table has ${model}`)) continue;
+      check(row[col] === want.toFixed(4), `${model}: e_F median ${row[col]} against numpy's ${want.toFixed(4)}`);
+    }
+  }
 
   // the physical-validity section (issue 32): its figures, a row per run and
   // pair with contact rows, and block_hold's cone and creep as h5py and the

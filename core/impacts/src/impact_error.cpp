@@ -6,18 +6,31 @@
 
 namespace pb {
 
+namespace {
+
+// ||a - b||_M, M = diag(m, m, m k^2)
+double m_distance(const ImpactObject& o, const Velocities& a, const Velocities& b) {
+  const std::array<double, 3> weight = {o.mass_kg, o.mass_kg, o.inertia_kgm2()};
+  double sum = 0.0;
+  for (std::size_t j = 0; j < 3; ++j) sum += weight[j] * (a[j] - b[j]) * (a[j] - b[j]);
+  return std::sqrt(sum);
+}
+
+}  // namespace
+
 double impact_eps(const ImpactObject& o, const Velocities& predicted, const Velocities& before,
                   const Velocities& measured) {
-  const std::array<double, 3> weight = {o.mass_kg, o.mass_kg, o.inertia_kgm2()};
-  double miss = 0.0;
-  double change = 0.0;
-  for (std::size_t j = 0; j < 3; ++j) {
-    const double d = predicted[j] - measured[j];
-    const double c = measured[j] - before[j];
-    miss += weight[j] * d * d;
-    change += weight[j] * c * c;
-  }
-  return std::sqrt(miss) / std::sqrt(change);
+  return m_distance(o, predicted, measured) / m_distance(o, measured, before);
+}
+
+ImpactScore impact_score(const ImpactObject& o, const Velocities& predicted,
+                         const Velocities& before, const Velocities& measured) {
+  ImpactScore s;
+  const double miss = m_distance(o, predicted, measured);
+  s.eps = miss / m_distance(o, measured, before);
+  s.e_f = miss / m_distance(o, measured, Velocities{0.0, 0.0, 0.0});
+  s.spin_eps = std::abs(predicted[2] - measured[2]) / std::abs(measured[2] - before[2]);
+  return s;
 }
 
 double quantile(std::vector<double> values, double q) {

@@ -42,15 +42,25 @@ std::vector<ImpactOutcome> predict_impacts(const ImpactModel& model, const Impac
   return out;
 }
 
-std::vector<double> impact_errors(const ImpactTable& table, const std::vector<std::size_t>& indices,
-                                  const std::vector<ImpactOutcome>& outcomes) {
-  std::vector<double> eps(indices.size());
+std::vector<ImpactScore> impact_scores(const ImpactTable& table,
+                                       const std::vector<std::size_t>& indices,
+                                       const std::vector<ImpactOutcome>& outcomes) {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<ImpactScore> scores(indices.size(), ImpactScore{nan, nan, nan});
   for (std::size_t k = 0; k < indices.size(); ++k) {
     const std::size_t i = indices[k];
-    eps[k] = outcomes[k].ok() ? impact_eps(table.object, outcomes[k].after.velocities(),
-                                           table.before[i].velocities(), table.after[i].velocities())
-                              : std::numeric_limits<double>::quiet_NaN();
+    if (!outcomes[k].ok()) continue;
+    scores[k] = impact_score(table.object, outcomes[k].after.velocities(),
+                             table.before[i].velocities(), table.after[i].velocities());
   }
+  return scores;
+}
+
+std::vector<double> impact_errors(const ImpactTable& table, const std::vector<std::size_t>& indices,
+                                  const std::vector<ImpactOutcome>& outcomes) {
+  const std::vector<ImpactScore> scores = impact_scores(table, indices, outcomes);
+  std::vector<double> eps(scores.size());
+  for (std::size_t k = 0; k < scores.size(); ++k) eps[k] = scores[k].eps;
   return eps;
 }
 

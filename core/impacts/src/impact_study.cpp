@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "planarbench/errors.hpp"
 #include "planarbench/run_result.hpp"
@@ -60,6 +62,8 @@ const std::vector<CampaignMetric>& impact_metrics() {
       {"drop", "-", "the impact's row in the original file (data.drop)"},
       {"fold", "-", "the cross-validation fold that judged it (-1: every impact, -2: scored)"},
       {"eps", "-", "||v_pred - v_meas||_M / ||v_meas - v_pre||_M, M = diag(m, m, m k^2)"},
+      {"e_f", "-", "||v_pred - v_meas||_M / ||v_meas||_M (Fazeli et al., CoRL 2017)"},
+      {"spin_eps", "-", "|theta'_pred - theta'_meas| / |theta'_meas - theta'_pre|"},
       {"angle_rad", "rad", "the impact's angle, counter-clockwise"},
       {"pre_vx_mps", "m/s", "measured x' before"},
       {"pre_vy_mps", "m/s", "measured y' before"},
@@ -80,21 +84,35 @@ namespace {
 
 struct Judged {
   std::vector<double> eps;
+  std::vector<double> e_f;
+  std::vector<double> spin_eps;
   std::array<std::vector<double>, 3> abs_error;  // |pred - meas| of x', y', theta'
 };
 
 nlohmann::ordered_json summary_json(const Judged& j) {
-  const ErrorSummary s = summarize(j.eps);
   auto number = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nullptr; };
+  const ErrorSummary s = summarize(j.eps);
   nlohmann::ordered_json out;
   out["impacts"] = s.count;
   out["failed"] = s.failed;
-  out["eps_median"] = number(s.median);
-  out["eps_mean"] = number(s.mean);
-  out["eps_p90"] = number(s.p90);
-  out["abs_error_vx_median_mps"] = number(quantile(j.abs_error[0], 0.5));
-  out["abs_error_vy_median_mps"] = number(quantile(j.abs_error[1], 0.5));
-  out["abs_error_w_median_radps"] = number(quantile(j.abs_error[2], 0.5));
+  // median, mean and p90 of each relative error (eps first: the fit's objective)
+  for (const auto& [name, values] : {std::pair<const char*, const std::vector<double>*>{"eps", &j.eps},
+                                     {"e_f", &j.e_f},
+                                     {"spin_eps", &j.spin_eps}}) {
+    const ErrorSummary e = summarize(*values);
+    out[fmt::format("{}_median", name)] = number(e.median);
+    out[fmt::format("{}_mean", name)] = number(e.mean);
+    out[fmt::format("{}_p90", name)] = number(e.p90);
+  }
+  // each velocity component's absolute error
+  constexpr std::array<const char*, 3> component = {"vx", "vy", "w"};
+  constexpr std::array<const char*, 3> unit = {"mps", "mps", "radps"};
+  for (std::size_t c = 0; c < 3; ++c) {
+    for (const auto& [stat, q] : {std::pair<const char*, double>{"median", 0.5}, {"p90", 0.9}}) {
+      out[fmt::format("abs_error_{}_{}_{}", component[c], stat, unit[c])] =
+          number(quantile(j.abs_error[c], q));
+    }
+  }
   return out;
 }
 
@@ -163,12 +181,14 @@ CampaignTable impact_study_table(const ImpactStudyHeader& header,
     for (const FoldFit& f : fits) {
       if (f.model != m->name()) continue;
       wall += f.wall_time_s;
-      const std::vector<double> eps = impact_errors(table, f.predicted, f.outcomes);
+      const std::vector<ImpactScore> score = impact_scores(table, f.predicted, f.outcomes);
       Judged& into = f.fold == kWholeFile ? in_sample : judged;
       for (std::size_t k = 0; k < f.predicted.size(); ++k) {
         const std::size_t i = f.predicted[k];
         const ImpactOutcome& o = f.outcomes[k];
-        into.eps.push_back(eps[k]);
+        into.eps.push_back(score[k].eps);
+        into.e_f.push_back(score[k].e_f);
+        into.spin_eps.push_back(score[k].spin_eps);
         const auto pred = o.after.velocities();
         const auto meas = table.after[i].velocities();
         for (std::size_t c = 0; c < 3; ++c) {
@@ -188,7 +208,9 @@ CampaignTable impact_study_table(const ImpactStudyHeader& header,
         const double nan = kNaN;
         row.metrics = {table.drop.empty() ? nan : table.drop[i],
                        static_cast<double>(f.fold),
-                       eps[k],
+                       score[k].eps,
+                       score[k].e_f,
+                       score[k].spin_eps,
                        table.before[i].angle_rad,
                        pre[0], pre[1], pre[2],
                        meas[0], meas[1], meas[2],

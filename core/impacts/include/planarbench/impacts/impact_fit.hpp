@@ -33,7 +33,11 @@ struct FitOptions {
                                                          const std::vector<double>& parameters,
                                                          int jobs);
 
-// eps of each outcome against the measured impact (NaN for a failed one)
+// every error of each outcome against the measured impact (NaN for a failed one)
+[[nodiscard]] std::vector<ImpactScore> impact_scores(const ImpactTable& table,
+                                                     const std::vector<std::size_t>& indices,
+                                                     const std::vector<ImpactOutcome>& outcomes);
+// their eps alone (the fit's objective)
 [[nodiscard]] std::vector<double> impact_errors(const ImpactTable& table,
                                                 const std::vector<std::size_t>& indices,
                                                 const std::vector<ImpactOutcome>& outcomes);
