@@ -20,6 +20,7 @@
 #include "impact_tasks.hpp"
 #include "planarbench/errors.hpp"
 #include "planarbench/impacts/impact_data.hpp"
+#include "planarbench/impacts/impact_identification.hpp"
 #include "planarbench/output_file.hpp"
 #include "planarbench/results_file.hpp"
 
@@ -154,6 +155,25 @@ void print_summary(const CampaignTable& t, const char* section) {
                 num("eps_median").c_str(), num("eps_mean").c_str(), num("eps_p90").c_str(),
                 num("e_f_median").c_str(), num("e_f_mean").c_str(), num("spin_eps_median").c_str(),
                 s.at("failed").get<int>(), m.at("wall_time_s").get<double>());
+  }
+  // what the data do not identify (impact_identification.hpp)
+  std::string weak;
+  for (const auto& m : t.description.at("models")) {
+    if (!m.contains("identification")) continue;
+    for (const auto& p : m.at("identification")) {
+      if (p.at("identified").get<bool>()) continue;
+      const double w = p.at("half_width").get<double>();
+      weak += fmt::format("{}  {} {} ({}: folds {:.4g} .. {:.4g})", weak.empty() ? "" : "\n",
+                          m.at("name").get<std::string>(), p.at("name").get<std::string>(),
+                          p.at("log_scale").get<bool>() ? fmt::format("x/ {:.2f}", 1.0 + w)
+                                                        : fmt::format("+-{:.0f} %", 100.0 * w),
+                          p.at("fold_min").get<double>(), p.at("fold_max").get<double>());
+    }
+  }
+  if (!weak.empty()) {
+    std::printf("not identified by the data (the folds' jackknife 95 %% interval wider than +-%.0f %%, "
+                "x/ 1.2 on a log scale):\n%s\n",
+                100.0 * kIdentifiedHalfWidth, weak.c_str());
   }
 }
 

@@ -60,6 +60,41 @@ std::string colour_of(const std::string& model, std::size_t index) {
   return engine_colour(model, index);
 }
 
+// what the data identify: each fitted parameter's spread over the folds (the
+// study's identification, its rule in the description)
+Table identification_table(const Json& d) {
+  Table t;
+  t.id = "impacts_identification";
+  t.title = "Measured impacts: what the data identify";
+  t.note = fmt::format(
+      "Per model and fitted parameter: the whole-file fit, the range of the fold fits and the "
+      "grouped jackknife's 95 % interval, +-2 SE with SE^2 = (k - 1) / k sum (p_i - mean)^2 "
+      "over the k fold fits (on log p for a log-scale parameter, shown as a factor x/). "
+      "Identified: the interval within +-{:.0f} % of the whole-file value; otherwise the "
+      "objective is flat along it and its value is the fit's, not the data's.",
+      100.0 * d.value("identified_half_width", std::nan("")));
+  t.columns = {"model", "parameter", "whole file", "folds min", "folds max", "95 % (+-)",
+               "identified"};
+  for (const auto& m : d.at("models")) {
+    if (!m.contains("identification")) continue;
+    for (const auto& p : m.at("identification")) {
+      const bool ok = p.at("identified").get<bool>();
+      const double w = p.at("half_width").get<double>();
+      t.rows.push_back({m.at("name").get<std::string>(), p.at("name").get<std::string>(),
+                        fmt::format("{:.4g}", p.at("whole").get<double>()),
+                        fmt::format("{:.4g}", p.at("fold_min").get<double>()),
+                        fmt::format("{:.4g}", p.at("fold_max").get<double>()),
+                        p.at("log_scale").get<bool>() ? fmt::format("x/ {:.2f}", 1.0 + w)
+                                                      : fmt::format("{:.1f} %", 100.0 * w),
+                        ok                                          ? "yes"
+                        : p.at("whole_outside_folds").get<bool>() ? "no (whole-file fit outside the folds')"
+                                                                    : "no"});
+      t.row_status.push_back(ok ? "" : "fail");
+    }
+  }
+  return t;
+}
+
 Table convention_table(const Json& d) {
   Table t;
   t.id = "impacts_convention";
@@ -169,6 +204,10 @@ ImpactsSection section_of(const CampaignTable& t, const std::string& file) {
   s.tables.push_back(std::move(models));
 
   if (!scored) {
+    if (Table spread = identification_table(d); !spread.rows.empty()) {
+      s.tables.push_back(std::move(spread));
+    }
+
     Table fits;
     fits.id = "impacts_fits";
     fits.title = "Measured impacts: every fit";

@@ -142,6 +142,28 @@ TEST(CmdImpacts, EveryImpactIsAlsoScoredInThePublishedMetric) {
                             "spin_eps_p90", "abs_error_vx_p90_mps", "abs_error_w_p90_radps"}) {
       EXPECT_TRUE(cv.contains(key)) << name << " " << key;
     }
+    // what the data identify (issue 34, item 4): each fitted parameter's
+    // fold range as the fits stored beside it give it
+    if (m.contains("identification")) {
+      for (const auto& p : m.at("identification")) {
+        std::size_t j = 0;
+        while (m.at("parameters").at(j).at("name") != p.at("name")) ++j;
+        double lo = 1e300, hi = -1e300;
+        for (const auto& one : m.at("fits")) {
+          if (one.at("fold").get<int>() < 0) continue;
+          lo = std::min(lo, one.at("parameters").at(j).get<double>());
+          hi = std::max(hi, one.at("parameters").at(j).get<double>());
+        }
+        EXPECT_EQ(p.at("fold_min").get<double>(), lo) << name;
+        EXPECT_EQ(p.at("fold_max").get<double>(), hi) << name;
+        EXPECT_EQ(p.at("identified").get<bool>(),
+                  p.at("half_width").get<double>() <=
+                      f.at("description").at("identified_half_width").get<double>())
+            << name;
+      }
+    } else {
+      EXPECT_TRUE(m.at("parameters").empty()) << name << ": a fitted model without its spread";
+    }
     if (f.at("e_f_median_numpy").contains(name)) {
       // the same order statistics of the same doubles: exactly equal
       EXPECT_EQ(cv.at("e_f_median").get<double>(), f.at("e_f_median_numpy").at(name).get<double>())

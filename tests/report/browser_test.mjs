@@ -321,7 +321,11 @@ try {
   const impactPlots = await page.locator('#impacts .wp-plot svg').count();
   check(impactPlots === 4, `measured-impacts section draws its 4 figures: ${impactPlots}`);
   const impactTables = await page.locator('#impacts table').count();
-  check(impactTables === 3, `measured-impacts section has its 3 tables: ${impactTables}`);
+  check(impactTables === 4, `measured-impacts section has its 4 tables: ${impactTables}`);
+  // what the data identify (issue 34): a row per fitted parameter of the fitted
+  // models: box2d's zeta and mu (its K is fixed), rigid's e and mu, the naive bounce's e
+  const spreadRows = await page.locator('#tbl-impacts_identification tbody tr').count();
+  check(spreadRows === 5, `the identification table has a row per fitted parameter: ${spreadRows}`);
   const conventionRows = await page.locator('#impacts table').first().locator('tbody tr').count();
   check(conventionRows === 4, `the convention table has a row per sign pair: ${conventionRows}`);
   // both metrics (issue 34): each model's e_F median as numpy gives it from

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "planarbench/errors.hpp"
+#include "planarbench/impacts/impact_identification.hpp"
 #include "planarbench/run_result.hpp"
 
 namespace pb {
@@ -125,6 +126,34 @@ nlohmann::ordered_json parameters_json(const ImpactModel& m) {
   return out;
 }
 
+// each fitted parameter's spread over the fold fits (impact_identification.hpp);
+// empty without a whole-file fit and two fold fits
+nlohmann::ordered_json identification_json(const ImpactModel& m, const std::vector<FoldFit>& fits) {
+  std::vector<double> whole;
+  std::vector<std::vector<double>> folds;
+  for (const FoldFit& f : fits) {
+    if (f.model != m.name()) continue;
+    if (f.fold == kWholeFile) whole = f.fit.parameters;
+    if (f.fold >= 0) folds.push_back(f.fit.parameters);
+  }
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  if (whole.empty() || folds.size() < 2) return out;
+  for (const ParameterSpread& p : parameter_spread(m.parameters(), whole, folds)) {
+    out.push_back({{"name", p.name},
+                   {"unit", p.unit},
+                   {"log_scale", p.log_scale},
+                   {"whole", p.whole},
+                   {"fold_min", p.fold_min},
+                   {"fold_max", p.fold_max},
+                   {"folds", p.folds},
+                   {"jackknife_se", p.jackknife_se},
+                   {"half_width", p.half_width},
+                   {"identified", p.identified},
+                   {"whole_outside_folds", p.whole_outside_folds}});
+  }
+  return out;
+}
+
 }  // namespace
 
 CampaignTable impact_study_table(const ImpactStudyHeader& header,
@@ -159,6 +188,9 @@ CampaignTable impact_study_table(const ImpactStudyHeader& header,
                      {"rule", fmt::format("highest r; refused below r {} or outside slope 1 +- {}",
                                           kMinCorrelation, kSlopeBand)}};
   d["folds"] = header.folds;
+  // a fitted parameter is identified when the folds' jackknife +-2 SE lies
+  // within this share of its value (impact_identification.hpp)
+  d["identified_half_width"] = kIdentifiedHalfWidth;
   d["seed"] = header.seed;
   if (!header.parameters_from.empty()) d["parameters_from"] = header.parameters_from;
   if (header.kind == "impacts_score") d["in_sample"] = header.in_sample;
@@ -222,6 +254,7 @@ CampaignTable impact_study_table(const ImpactStudyHeader& header,
       fold_list.push_back(fit_json(f));
     }
     mj["fits"] = fold_list;
+    if (auto spread = identification_json(*m, fits); !spread.empty()) mj["identification"] = spread;
     if (!judged.eps.empty()) {
       mj[header.kind == "impacts_score" ? "scored" : "cross_validated"] = summary_json(judged);
     }
