@@ -4,7 +4,9 @@
 #   - Debian's chromium when /usr/bin/chromium is missing (the browser test
 #     drives it headless through playwright-core; no browser is downloaded);
 #   - the npm packages pinned in reports/web/package-lock.json (uPlot, inlined
-#     into report.html, and playwright-core) into reports/web/node_modules with
+#     into report.html, and playwright-core) into reports/web/node_modules, and
+#     those of adapters/mujoco3/wasm/package-lock.json (mujoco-js: MuJoCo 3's
+#     official WebAssembly build, issue 33) into its node_modules, each with
 #     `npm ci`, skipped when that lock file is already installed.
 # Run as root or with sudo (apt-get).
 set -euo pipefail
@@ -33,16 +35,23 @@ if [ "$node_major" -lt 20 ]; then
   exit 1
 fi
 
-# npm packages: reinstalled only when the lock file changed since the last install
-stamp="$WEB/node_modules/.planarbench-lock.sha256"
-want="$(sha256sum "$WEB/package-lock.json" | cut -d' ' -f1)"
-if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$want" ] &&
-   [ -f "$WEB/node_modules/uplot/dist/uPlot.iife.min.js" ] &&
-   [ -f "$WEB/node_modules/playwright-core/package.json" ]; then
-  echo "setup_web: npm packages of $WEB already installed"
-else
-  echo "setup_web: npm ci in $WEB"
-  (cd "$WEB" && npm ci --no-audit --no-fund --loglevel=error)
-  echo "$want" > "$stamp"
-fi
-echo "setup_web: node $(node --version), $(/usr/bin/chromium --version 2>/dev/null || echo 'chromium ?'), uplot $(node -p "require('./$WEB/node_modules/uplot/package.json').version")"
+# npm packages: each folder reinstalled only when its lock file changed since
+# its last install (or a file it must have is missing)
+npm_install() {  # folder, then the files it must have
+  local dir="$1"; shift
+  local stamp="$dir/node_modules/.planarbench-lock.sha256"
+  local want
+  want="$(sha256sum "$dir/package-lock.json" | cut -d' ' -f1)"
+  local have=1
+  for f in "$@"; do [ -f "$dir/node_modules/$f" ] || have=0; done
+  if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$want" ] && [ "$have" -eq 1 ]; then
+    echo "setup_web: npm packages of $dir already installed"
+  else
+    echo "setup_web: npm ci in $dir"
+    (cd "$dir" && npm ci --no-audit --no-fund --loglevel=error)
+    echo "$want" > "$stamp"
+  fi
+}
+npm_install "$WEB" uplot/dist/uPlot.iife.min.js playwright-core/package.json
+npm_install adapters/mujoco3/wasm mujoco-js/package.json mujoco-js/dist/mujoco_wasm.js
+echo "setup_web: node $(node --version), $(/usr/bin/chromium --version 2>/dev/null || echo 'chromium ?'), uplot $(node -p "require('./$WEB/node_modules/uplot/package.json').version"), mujoco-js $(node -p "require('./adapters/mujoco3/wasm/node_modules/mujoco-js/package.json').version")"
