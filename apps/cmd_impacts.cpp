@@ -172,8 +172,8 @@ void print_summary(const CampaignTable& t, const char* section) {
   }
   if (!weak.empty()) {
     std::printf("not identified by the data (the folds' jackknife 95 %% interval wider than +-%.0f %%, "
-                "x/ 1.2 on a log scale):\n%s\n",
-                100.0 * kIdentifiedHalfWidth, weak.c_str());
+                "x/ %.1f on a log scale):\n%s\n",
+                100.0 * kIdentifiedHalfWidth, 1.0 + kIdentifiedHalfWidth, weak.c_str());
   }
 }
 

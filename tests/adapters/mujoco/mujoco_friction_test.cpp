@@ -7,11 +7,13 @@
 // MuJoCo 2.2.2's default, whose friction rows share the pair's solref and
 // stop only 1 - e^(-b T_c) = 47 % of the slip in the 10 ms contact.
 #include "mujoco_friction.hpp"
+#include "mujoco_settings.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <variant>
 
 #include "planarbench/adapters/mujoco_engine.hpp"
 #include "planarbench/case_loader.hpp"
@@ -71,7 +73,6 @@ TEST(MujocoFriction, StiffRowsNeedTheEllipticCone) {
   }
 }
 
-
 // The mechanism behind MuJoCo's dissipation-deficit known breach
 // (cases/thresholds.toml; README, Per-step physical validity): 2.2.2 gives
 // its friction rows the pair's per-step solref damping B = c / (m_set d), so
@@ -86,8 +87,13 @@ TEST(MujocoFriction, InsideTheConeFrictionIsTheSolrefServo) {
   auto e = make_mujoco_engine();
   const RunResult r = run_engine(*e, c, {});
   ASSERT_EQ(r.status, RunStatus::ok) << r.reason;
-  const double mu = 0.3, m_t = 1.0 / 3.0;
-  const double b = 600.0 / (1.0 * 0.9999);  // 1/s, c / (m d): disk_throw's c, m; MuJoCo's d
+  // the case's law, mass and mu, and the adapter's default impedance d
+  const ContactPair& pair = c.contacts.at(0);
+  const double mu = pair.friction;
+  const double m = c.bodies.at(static_cast<std::size_t>(pair.body_b)).mass_kg;
+  const double m_t = m / 3.0;  // a uniform disk's contact point: 1 / (1/m + R^2 / I)
+  const double d = internal::mujoco::MujocoSettings{}.solimp.at(0);
+  const double b = std::get<KelvinVoigt>(pair.law).damping_ns_per_m / (m * d);  // 1/s, c / (m d)
   int inside = 0;
   double worst = 0.0;
   for (const ContactRow& row : r.contacts) {
