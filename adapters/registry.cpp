@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "planarbench/adapters/box2d_engine.hpp"
+#include "planarbench/adapters/mujoco3_engine.hpp"
 #include "planarbench/adapters/mujoco_engine.hpp"
 #include "planarbench/adapters/ode_engine.hpp"
 #include "planarbench/analytic/analytic_engine.hpp"
@@ -21,8 +22,8 @@ std::string joined_names() {
 }  // namespace
 
 const std::vector<std::string>& engine_names() {
-  static const std::vector<std::string> names = {"analytic", "reference", "mujoco", "box2d",
-                                                 "ode"};
+  static const std::vector<std::string> names = {"analytic", "reference", "mujoco", "mujoco3",
+                                                 "box2d",    "ode"};
   return names;
 }
 
@@ -30,6 +31,7 @@ std::unique_ptr<Engine> make_engine(const std::string& name) {
   if (name == "analytic") return make_analytic_engine();
   if (name == "reference") return make_reference_engine();
   if (name == "mujoco") return make_mujoco_engine();
+  if (name == "mujoco3") return make_mujoco3_engine();
   if (name == "box2d") return make_box2d_engine();
   if (name == "ode") return make_ode_engine();
   throw InputError(fmt::format("--engine: unknown engine '{}'; allowed: {}, all", name,

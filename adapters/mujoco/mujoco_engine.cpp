@@ -20,6 +20,7 @@
 #include <optional>
 
 #include "mujoco_contact_mapping.hpp"
+#include "mujoco_description.hpp"
 #include "mujoco_exact_depth.hpp"
 #include "mujoco_fault.hpp"
 #include "mujoco_frame.hpp"
@@ -31,6 +32,7 @@
 #include "mujoco_friction.hpp"
 #include "mujoco_pair_state.hpp"
 #include "mujoco_probe.hpp"
+#include "mujoco_sampler.hpp"
 #include "mujoco_settings.hpp"
 #include "mujoco_solref_rule.hpp"
 #include "mujoco_stepping.hpp"
@@ -52,12 +54,6 @@ constexpr double kInactiveGapM = 1e3;
 // an impact resolved by fewer steps than this is flagged in the mapping
 constexpr double kMinStepsPerImpact = 10.0;
 
-// MPR's depth against the exact geometry, over a run
-struct DepthCheck {
-  long samples = 0;
-  double max_abs_error_m = 0.0;
-  double max_penetration_m = 0.0;
-};
 
 // the reduced mass of two bodies (a fixed body has infinite mass), kg
 double reduced_mass_kg(const Body& a, const Body& b) {
@@ -85,7 +81,9 @@ class MujocoEngine final : public Engine {
   double time() const override { return static_cast<double>(steps_) * dt_s_; }
   void body_states(std::vector<BodyState>& out) const override;
   void contacts(std::vector<ContactSample>& out) const override;
-  std::vector<ContactEpisode> episodes() const override { return tracker_.episodes(); }
+  std::vector<ContactEpisode> episodes() const override {
+    return sampler_ ? sampler_->episodes() : std::vector<ContactEpisode>{};
+  }
   long steps() const override { return steps_; }
   nlohmann::json mapping() const override;
   nlohmann::json extra_attributes() const override;
@@ -102,13 +100,9 @@ class MujocoEngine final : public Engine {
   PairParams pair_params(std::size_t k, bool inactive) const;
   Calibration calibration(std::size_t k, const FirstTouch& t) const;
   void build_oracle(nlohmann::json& pairs, nlohmann::json& lost);
-  nlohmann::json native_pair_json(std::size_t k) const;
-  void add_soft_contact_notes(nlohmann::json& lost) const;
   void ensure_current();
   void check_warnings();
   void sample();
-  BodyState state_of(std::size_t body) const;
-  nlohmann::json describe_bodies() const;
 
   MujocoSettings settings_;
   SettingsBinder binder_;
@@ -126,12 +120,7 @@ class MujocoEngine final : public Engine {
   std::unique_ptr<ForceInjector> injector_;
   std::unique_ptr<SolrefRule> rule_;  // native mode
   WarningWatch watch_;
-  std::vector<PairObservation> obs_;  // at the current state
-  std::vector<Vec2> last_point_m_;    // per pair: last contact point seen
-  std::vector<Vec2> last_normal_;     // per pair: last normal seen (a -> b)
-  std::vector<bool> seen_;
-  std::vector<DepthCheck> depth_;  // per pair
-  EpisodeTracker tracker_;
+  std::optional<PairSampler> sampler_;  // observations, episodes, depth checks
   long steps_ = 0;
   bool forward_current_ = false;  // mj_forward ran at the current state
   bool sampled_ = false;          // the current state was sampled
@@ -229,60 +218,11 @@ void MujocoEngine::build_oracle(nlohmann::json& pairs, nlohmann::json& lost) {
     }
   }
   model_ = load(options);
-  add_soft_contact_notes(lost);
+  add_soft_contact_notes(settings_.solimp[1], lost);
   lost.push_back(
       "solref is per unit effective mass at one configuration (the first touch); where the "
       "effective mass changes with pose or contact point the physical stiffness changes "
       "with it");
-}
-
-// native: what pair k's law becomes, before the run (the rule, no numbers
-// from the future)
-nlohmann::json MujocoEngine::native_pair_json(std::size_t k) const {
-  const ContactLaw& law = case_.contacts[k].law;
-  nlohmann::json j;
-  j["law"] = contact_law_name(law);
-  j["expressed_as"] =
-      "MuJoCo's soft contact on every contact MuJoCo's collider reports for the pair, one "
-      "direct solref for the pair set at every evaluation of the dynamics (after mj_collision, "
-      "before mj_makeConstraint) from the state the step starts from";
-  j["solref_rule"] =
-      "solref = (-sigma k, -c) / m_set: (k, c) the law at the pair's penetration delta (its "
-      "deepest contact) as a linear spring-damper; m_set = 1^T A^+ 1 with A = J M^-1 J^T of the "
-      "pair's pressed contacts from MuJoCo's mj_jac and mj_solveM (one contact: "
-      "1 / (J M^-1 J^T)); sigma = delta / delta_w, delta_w = w^T r / m_set, w = A^+ 1, so that "
-      "the rows' springs sum to k delta (SPEC §1, one force per pair) and their dampers to c "
-      "times the rows' w-weighted mean normal speed; before it, a contact that two convex "
-      "pieces of one body report at one point (a vertex they share) is fused into the first "
-      "(exclude = 2, MuJoCo's flag for a fused contact): one row per point";
-  if (const auto* kv = std::get_if<KelvinVoigt>(&law)) {
-    j["law_as_spring_damper"] =
-        kv->damping_depth_m > 0.0
-            ? "Kelvin-Voigt: k = K, c = c times the ramp's cubic step at delta"
-            : "Kelvin-Voigt: k = K, c = c (exact: the law is a linear spring-damper)";
-  } else if (std::holds_alternative<Hertz>(law)) {
-    j["law_as_spring_damper"] = "Hertz: k = K delta^(n-1) (secant at delta), c = 0";
-  } else {
-    j["law_as_spring_damper"] =
-        "Lankarani-Nikravesh: k = K delta^(n-1) (secant at delta), c = K delta^n 3 (1 - e^2) / 4 "
-        "/ delta_dot^-, delta_dot^- the normal approach speed at the pair's first step pressed";
-  }
-  return j;
-}
-
-void MujocoEngine::add_soft_contact_notes(nlohmann::json& lost) const {
-  const double d = settings_.solimp[1];
-  lost.push_back(fmt::format(
-      "MuJoCo's soft contact with impedance d = {}: the constraint acceleration is "
-      "(1 - d) a0 - b v - k r (a0: acceleration without the contact), so inside a contact "
-      "the share d of gravity is removed from the contact's own dynamics: a resting contact "
-      "carries m g at a penetration (1 - d) m g / k (~0) instead of m g / k, and an impact "
-      "runs as the spring-damper without gravity (the clamp releases at k delta + c "
-      "delta_dot = -d m_eff a0.n instead of 0)",
-      d));
-  lost.push_back(
-      "the reported force is MuJoCo's constraint force: m_eff (k delta + c delta_dot) plus "
-      "the share d of the normal load of gravity");
 }
 
 void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
@@ -299,7 +239,6 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
   dt_s_ = settings_.dt_s;
   steps_ = 0;
   probe_steps_ = 0;
-  tracker_ = EpisodeTracker{};
   injector_.reset();
   rule_.reset();
   const std::size_t np = case_.contacts.size();
@@ -351,9 +290,9 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
         pairs.push_back(not_simulated(k));
         continue;
       }
-      pairs.push_back(native_pair_json(k));
+      pairs.push_back(native_pair_json(case_.contacts[k].law));
     }
-    add_soft_contact_notes(lost);
+    add_soft_contact_notes(settings_.solimp[1], lost);
     lost.push_back(
         "solref is one per pair and acceleration-based: MuJoCo solves the pair's rows together, "
         "so with several contacts the force is split as MuJoCo's solver splits it (a uniform "
@@ -364,25 +303,8 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
   }
   for (std::size_t k = 0; k < np; ++k) {
     const ContactPair& cp = case_.contacts[k];
-    const PairPlan& pp = plan_.pairs[k];
-    const PairParams p = pair_params(k, inject_);
-    nlohmann::json& j = pairs[k];
-    j["name"] = cp.name;
-    j["body_a"] = case_.bodies[static_cast<std::size_t>(cp.body_a)].name;
-    j["body_b"] = case_.bodies[static_cast<std::size_t>(cp.body_b)].name;
-    j["collider"] = collider_description(pp.geom_a, pp.geom_b);
-    j["condim"] = pp.condim;
-    j["margin_m"] = pp.margin_m;
-    j["gap_m"] = p.gap_m;
-    if (!inject_) j["solimp"] = settings_.solimp;
-    if (cp.has_friction()) j["friction"] = friction_mapping(cp.friction, settings_);
-    if (pp.collider == Collider::mpr) {
-      lost.push_back(fmt::format(
-          "pair '{}': penetration from libccd MPR, depth error ~1e-6 m (measured 0.8-2.6e-6 m "
-          "for a sphere against an ellipsoid at 30-150 um penetration, mpr_tolerance 1e-6); "
-          "margin 0, so the onset is resolved to one step",
-          cp.name));
-    }
+    describe_pair(case_, plan_, k, pair_params(k, inject_), inject_, pairs[k], lost);
+    if (cp.has_friction()) pairs[k]["friction"] = friction_mapping(cp.friction, settings_);
   }
 
   data_.reset(mj_makeData(model_.get()));
@@ -394,11 +316,7 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
   scratch_.emplace(model_.get());
   if (inject_) injector_ = std::make_unique<ForceInjector>(case_, model_.get(), layout_);
   if (!inject_ && !oracle_) rule_ = std::make_unique<SolrefRule>(case_, model_.get(), layout_);
-  obs_.clear();
-  last_point_m_.assign(np, Vec2::Zero());
-  last_normal_.assign(np, Vec2::Zero());
-  seen_.assign(np, false);
-  depth_.assign(np, DepthCheck{});
+  sampler_.emplace(case_, plan_, layout_);
   forward_current_ = false;
   sampled_ = false;
   probe_steps_ = integrations_on_this_thread() - steps_at_start;
@@ -418,7 +336,7 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
                    rule_ ? "; native mode runs mj_forward's stages one by one with the solref "
                            "rule between mj_collision and mj_makeConstraint"
                          : "")},
-      {"bodies", describe_bodies()},
+      {"bodies", describe_bodies(case_, plan_)},
       {"pairs", pairs},
       {"not_expressed", lost},
   };
@@ -426,42 +344,6 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
   std::optional<ForceInjector::Scope> scope;
   if (injector_) scope.emplace(*injector_);
   ensure_current();
-}
-
-nlohmann::json MujocoEngine::describe_bodies() const {
-  nlohmann::json out = nlohmann::json::array();
-  for (std::size_t i = 0; i < case_.bodies.size(); ++i) {
-    const Body& b = case_.bodies[i];
-    const GeomType g = plan_.bodies[i].geom;
-    nlohmann::json j = {
-        {"name", b.name}, {"shape", shape_type_name(b.shape)}, {"geom", geom_type_name(g)}};
-    if (const auto* e = std::get_if<Ellipse>(&b.shape)) {
-      const auto s = ellipsoid_size_m(*e);
-      j["ellipsoid_semi_axes_m"] = {s[0], s[1], s[2]};
-      j["note"] = "third (out-of-plane) semi-axis min(a, b); its section y = 0 is the ellipse";
-    } else if (std::holds_alternative<Polygon>(b.shape)) {
-      j["geoms"] = plan_.bodies[i].geom_count();
-      if (plan_.bodies[i].decomposed) j["decomposition"] = plan_.bodies[i].decomposition;
-      j["note"] =
-          "convex mesh: a bipyramid whose section y = 0 is the polygon; MuJoCo stores mesh "
-          "vertices in single precision (mjModel::mesh_vert is float): ~6e-8 relative";
-    } else if (std::holds_alternative<Circle>(b.shape)) {
-      j["note"] = "sphere: one contact point (a cylinder would give two)";
-    }
-    if (b.fixed) {
-      j["joints"] = "none: a geom of the world body";
-    } else {
-      j["joints"] = plan_.bodies[i].joint >= 0
-                        ? "hinge about +y at the pivot"
-                        : "slide x, slide z, hinge about +y through the centre of mass";
-      j["inertial"] = fmt::format(
-          "explicit: mass {} kg, diaginertia ({}, {}, {}) kg m^2 (about y: the case's planar "
-          "inertia; x, z only need to be valid)",
-          b.mass_kg, b.inertia_kgm2, b.inertia_kgm2, b.inertia_kgm2);
-    }
-    out.push_back(j);
-  }
-  return out;
 }
 
 void MujocoEngine::ensure_current() {
@@ -500,46 +382,7 @@ void MujocoEngine::check_warnings() {
 }
 
 void MujocoEngine::sample() {
-  const mjModel* m = model_.get();
-  const mjData* d = data_.get();
-  const double t = time();
-  observe_pairs(m, d, layout_, !inject_, *scratch_, obs_);
-  if (injector_) {
-    injector_->latch(obs_);
-    for (std::size_t k = 0; k < obs_.size(); ++k) obs_[k].force_n = injector_->force_n(k, obs_[k]);
-  }
-  for (std::size_t k = 0; k < obs_.size(); ++k) {
-    const PairLayout& p = layout_.pairs[k];
-    if (!p.present) continue;
-    const int a = case_.contacts[k].body_a;
-    const int b = case_.contacts[k].body_b;
-    const PairObservation& o = obs_[k];
-    if (o.reported && o.penetration_m > 0.0 && plan_.pairs[k].check_depth) {
-      const auto exact = exact_penetration_m(
-          case_.bodies[static_cast<std::size_t>(a)].shape, state_of(static_cast<std::size_t>(a)),
-          case_.bodies[static_cast<std::size_t>(b)].shape, state_of(static_cast<std::size_t>(b)));
-      DepthCheck& dc = depth_[k];
-      ++dc.samples;
-      dc.max_abs_error_m = std::max(dc.max_abs_error_m, std::abs(o.penetration_m - *exact));
-      dc.max_penetration_m = std::max(dc.max_penetration_m, *exact);
-    }
-    if (o.reported) {
-      tracker_.observe(t, a, b, o.penetration_m, o.approach_speed_mps, o.force_n);
-      last_point_m_[k] = o.point_m;
-      last_normal_[k] = o.normal_ab;
-      seen_[k] = true;
-    } else {
-      // not reported (beyond the margin): the speed along the last normal seen
-      // closes an open episode
-      double speed = 0.0;
-      if (seen_[k]) {
-        const auto p3 = to_mj(last_point_m_[k]);
-        const auto n3 = to_mj(last_normal_[k]);
-        speed = approach_speed_mps(m, d, p.mj_body_a, p.mj_body_b, p3.data(), n3.data(), *scratch_);
-      }
-      tracker_.observe_separated(t, a, b, speed);
-    }
-  }
+  sampler_->sample(model_.get(), data_.get(), time(), !inject_, {}, injector_.get());
 }
 
 void MujocoEngine::advance_to(double t_s) {
@@ -559,54 +402,19 @@ void MujocoEngine::advance_to(double t_s) {
   ensure_current();
 }
 
-BodyState MujocoEngine::state_of(std::size_t i) const {
-  const Body& b = case_.bodies[i];
-  BodyState s;
-  if (b.fixed || !model_) {
-    s.position_m = b.position_m;
-    s.angle_rad = b.angle_rad;
-    return s;
-  }
-  const mjData* d = data_.get();
-  const BodyLayout& l = layout_.bodies[i];
-  // centre of mass (inertial frame origin) and its velocity, world frame;
-  // the angle from the hinge coordinate, continuous (no wrapping)
-  s.position_m = from_mj(&d->xipos[3 * static_cast<std::size_t>(l.mj_body)]);
-  s.angle_rad = ccw_from_hinge(d->qpos[l.qpos_hinge]);
-  mjtNum v[6];  // (angular, linear) at the centre of mass
-  mj_objectVelocity(model_.get(), d, mjOBJ_BODY, l.mj_body, v, 0);
-  s.velocity_mps = from_mj(v + 3);
-  s.angular_velocity_radps = ccw_rate_from_mj(v);
-  return s;
-}
-
 void MujocoEngine::body_states(std::vector<BodyState>& out) const {
   out.resize(case_.bodies.size());
-  for (std::size_t i = 0; i < case_.bodies.size(); ++i) out[i] = state_of(i);
+  for (std::size_t i = 0; i < case_.bodies.size(); ++i) {
+    out[i] = mujoco_body_state(model_.get(), data_.get(), case_, layout_, i);
+  }
 }
 
 nlohmann::json MujocoEngine::mapping() const {
   nlohmann::json m = mapping_;
   if (rule_ && m.is_object()) {
-    m["solref_rule_seen"] = {
-        {"what", "over this run: the most pressed contacts of one pair in one step, and the "
-                 "largest spread factor sigma = delta / delta_w the rule applied, and the most "
-                 "contacts fused into another in one step (a vertex two convex pieces share, "
-                 "reported by both: one contact, exclude = 2)"},
-        {"most_rows", rule_->most_rows()},
-        {"most_fused", rule_->most_fused()},
-        {"largest_sigma", rule_->largest_scale()}};
+    m["solref_rule_seen"] = rule_->seen_json();
   }
-  for (std::size_t k = 0; k < depth_.size() && m.contains("pairs"); ++k) {
-    if (!plan_.pairs[k].check_depth) continue;
-    m["pairs"][k]["mpr_depth_check"] = {
-        {"what",
-         "MuJoCo's (MPR) penetration against the exact circle-ellipse penetration, "
-         "over every step in contact of this run"},
-        {"samples", depth_[k].samples},
-        {"max_abs_error_m", depth_[k].max_abs_error_m},
-        {"max_exact_penetration_m", depth_[k].max_penetration_m}};
-  }
+  if (sampler_ && m.is_object()) sampler_->add_depth_checks(m);
   return m;
 }
 
@@ -658,19 +466,7 @@ nlohmann::json MujocoEngine::extra_attributes() const {
 
 void MujocoEngine::contacts(std::vector<ContactSample>& out) const {
   out.clear();
-  for (std::size_t k = 0; k < obs_.size(); ++k) {
-    const PairObservation& o = obs_[k];
-    if (!o.reported || !(o.penetration_m > 0.0)) continue;
-    ContactSample s;
-    s.body_a = case_.contacts[k].body_a;
-    s.body_b = case_.contacts[k].body_b;
-    s.force_n = o.force_n;
-    s.penetration_m = o.penetration_m;
-    s.normal = o.normal_ab;
-    s.point_m = o.point_m;
-    s.tangential_force_n = o.tangential_force_n;
-    out.push_back(s);
-  }
+  if (sampler_) sampler_->contacts(out);
 }
 
 }  // namespace

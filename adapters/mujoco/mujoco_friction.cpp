@@ -6,7 +6,9 @@
 
 namespace pb::internal::mujoco {
 
-nlohmann::json friction_mapping(double mu, const MujocoSettings& s) {
+nlohmann::json friction_mapping(double mu, const MujocoSettings& s, MujocoLine line) {
+  const bool v3 = line == MujocoLine::v3;
+  const bool own_solref = v3 && (s.solreffriction[0] != 0.0 || s.solreffriction[1] != 0.0);
   nlohmann::json lost = nlohmann::json::array();
   lost.push_back(fmt::format(
       "soft friction: a tangential load inside the cone is held by a creep speed "
@@ -30,7 +32,12 @@ nlohmann::json friction_mapping(double mu, const MujocoSettings& s) {
         "(mju_QCQP2) and every update is reverted",
         s.noslip_iterations));
   }
-  if (s.friction_damping == "shared") {
+  if (v3 && !own_solref) {
+    lost.push_back(
+        "the friction rows share the pair's solref (MuJoCo 3's default, solreffriction "
+        "[0, 0]): inside the cone a slip decays as a_t = -b v_t at the law's b = c / m, so a "
+        "short contact stops only part of it (mujoco3.solreffriction sets the rows' own)");
+  } else if (!v3 && s.friction_damping == "shared") {
     lost.push_back(
         "the friction rows share the pair's solref (MuJoCo 2.2.2 has no friction solref): "
         "inside the cone a slip decays as a_t = -b v_t at the law's b = c / m, so a short "
@@ -38,7 +45,11 @@ nlohmann::json friction_mapping(double mu, const MujocoSettings& s) {
         "cone, is the opt-in remedy)");
   }
   const std::string rows =
-      s.friction_damping == "stiff"
+      own_solref
+          ? fmt::format("the friction rows with their own solref [{}, {}] "
+                        "(mujoco3.solreffriction, <pair solreffriction>) and the pair's solimp",
+                        s.solreffriction[0], s.solreffriction[1])
+      : !v3 && s.friction_damping == "stiff"
           ? std::string("the friction rows' damping B rewritten after mj_makeConstraint to "
                         "2 omega, omega = sqrt(K) of the contact's normal row "
                         "(mujoco.friction_damping = stiff): a slip inside the cone decays at "

@@ -41,7 +41,8 @@
 namespace pb::internal::mujoco {
 
 // the mapping's description of a pair's friction with coefficient mu under s
-[[nodiscard]] nlohmann::json friction_mapping(double mu, const MujocoSettings& s);
+[[nodiscard]] nlohmann::json friction_mapping(double mu, const MujocoSettings& s,
+                                              MujocoLine line = MujocoLine::v2);
 
 // friction_damping = stiff: every elliptic friction row of the contacts made
 // (rows efc_address + 1 .. + dim - 1) gets B = 2 sqrt(K) of the contact's

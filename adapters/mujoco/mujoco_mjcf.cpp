@@ -165,6 +165,14 @@ std::string write_mjcf(const Case& c, const MujocoPlan& plan, const MjcfOptions&
       plan.bodies.size() != c.bodies.size()) {
     throw EngineError("mujoco: write_mjcf needs the case's plan and one PairParams per pair");
   }
+  const bool own_friction_solref = o.solreffriction[0] != 0.0 || o.solreffriction[1] != 0.0;
+  if (o.mujoco_major < 3 &&
+      (own_friction_solref || o.integrator == "implicit" || o.integrator == "implicitfast")) {
+    throw EngineError(fmt::format(
+        "mujoco: MuJoCo 2.2.2 has neither solreffriction nor the integrator '{}' (MuJoCo 3 "
+        "does: engine mujoco3)",
+        o.integrator));
+  }
   std::string assets;
   std::string world;
   for (std::size_t i = 0; i < c.bodies.size(); ++i) {
@@ -190,8 +198,11 @@ std::string write_mjcf(const Case& c, const MujocoPlan& plan, const MjcfOptions&
     if (!pp.present) continue;
     const PairParams& p = o.pairs[k];
     // Coulomb friction on both tangents (the plan says why); none at condim 1
-    const std::string friction =
+    std::string friction =
         pp.condim > 1 ? fmt::format(R"( friction="{}")", reals(pp.friction.data(), 5)) : "";
+    if (pp.condim > 1 && own_friction_solref) {
+      friction += fmt::format(R"( solreffriction="{}")", reals(o.solreffriction.data(), 2));
+    }
     // every piece of a against every piece of b, with the case pair's parameters
     const int na = plan.bodies[static_cast<std::size_t>(cp.body_a)].geom_count();
     const int nb = plan.bodies[static_cast<std::size_t>(cp.body_b)].geom_count();

@@ -34,6 +34,14 @@ struct MjcfOptions {
   double impratio = 1.0;
   int noslip_iterations = 0;
   std::vector<PairParams> pairs;  // index = Case::contacts index
+  // the MuJoCo the text is for: 2 (2.2.2) or 3 (3.3.8). What 3 reads that 2
+  // refuses: solreffriction on a <pair> (2.3.6 on) and the integrators
+  // "implicit" (2.3.0) and "implicitfast" (2.3.3); the writer refuses them
+  // for 2 rather than write text 2.2.2 would reject
+  int mujoco_major = 2;
+  // the friction rows' own solref on every pair with friction; {0, 0}:
+  // none written (MuJoCo's default: the contact's solref)
+  std::array<double, 2> solreffriction = {0.0, 0.0};
 };
 
 // names of the MuJoCo elements of case body i and pair k; a polygon cut into

@@ -69,7 +69,8 @@ double effective_mass_kg(const mjModel* m, mjData* d, int body_a, int body_b, co
 }
 
 void observe_pairs(const mjModel* m, const mjData* d, const ModelLayout& layout, bool with_force,
-                   Scratch& scratch, std::vector<PairObservation>& out) {
+                   Scratch& scratch, std::vector<PairObservation>& out,
+                   std::span<const double> forces) {
   out.assign(layout.pairs.size(), PairObservation{});
   for (int i = 0; i < d->ncon; ++i) {
     const mjContact& con = d->contact[i];
@@ -81,7 +82,11 @@ void observe_pairs(const mjModel* m, const mjData* d, const ModelLayout& layout,
     if (con.dist < 0.0) ++o.pressed;
     if (with_force && con.efc_address >= 0) {
       mjtNum f[6];
-      mj_contactForce(m, d, i, f);
+      if (forces.empty()) {
+        mj_contactForce(m, d, i, f);
+      } else {
+        for (std::size_t j = 0; j < 6; ++j) f[j] = forces[6 * static_cast<std::size_t>(i) + j];
+      }
       o.force_n += f[0];  // contact frame: f[0] is the normal force, >= 0
       // the force on geom2 (the frame's rows: normal from geom1 to geom2,
       // then the two tangents), onto the case's body_b

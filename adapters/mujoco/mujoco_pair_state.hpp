@@ -7,6 +7,7 @@
 
 #include <mujoco/mujoco.h>
 
+#include <span>
 #include <vector>
 
 #include "mujoco_model.hpp"
@@ -42,9 +43,12 @@ struct PairObservation {
 };
 
 // Reads d->contact (valid after mj_collision at the current qpos) and d->qvel.
-// Forces (mj_contactForce, needs the constraint solve) only when with_force.
+// Forces only when with_force: mj_contactForce (needs the constraint solve),
+// or, when `forces` is not empty, its 6 numbers per contact of d->contact
+// (mj_contactForce's, computed by another MuJoCo on the same contacts).
 void observe_pairs(const mjModel* m, const mjData* d, const ModelLayout& layout, bool with_force,
-                   Scratch& scratch, std::vector<PairObservation>& out);
+                   Scratch& scratch, std::vector<PairObservation>& out,
+                   std::span<const double> forces = {});
 
 // (v_a - v_b) . n at world point p (MuJoCo frame), from the bodies'
 // translational Jacobians (position stage) and qvel; world body 0 is at rest

@@ -54,14 +54,26 @@ struct MujocoSettings {
   // case's own law applied as a force at MuJoCo's contact geometry
   // (mjcb_passive)
   std::string mode = "native";
+  // MuJoCo 3 only (engine "mujoco3"): the friction rows' own solref
+  // (mjContact::solreffriction, <pair solreffriction>, MuJoCo 2.3.6 on);
+  // [0, 0] = MuJoCo's default, the friction rows take the contact's solref
+  std::vector<double> solreffriction = {0.0, 0.0};
 };
 
-// Binds every member of `s` under engine name "mujoco"; the binder keeps
-// pointers into `s`, which must outlive it.
-[[nodiscard]] SettingsBinder bind_mujoco_settings(MujocoSettings& s);
+// which MuJoCo a settings struct is bound for: its engine name, and the keys
+// its version has
+enum class MujocoLine { v2, v3 };
+
+// Binds the members of `s` under engine name "mujoco" (v2: MuJoCo 2.2.2,
+// every key but solreffriction) or "mujoco3" (v3: MuJoCo 3.3.8: native mode
+// only, no friction_damping, solreffriction, and the integrators implicit and
+// implicitfast); the binder keeps pointers into `s`, which must outlive it.
+[[nodiscard]] SettingsBinder bind_mujoco_settings(MujocoSettings& s,
+                                                  MujocoLine line = MujocoLine::v2);
 
 // Checks what the binder cannot (the solimp ranges of MuJoCo's documentation);
 // throws InputError naming the key and where its value came from.
-void validate_mujoco_settings(const MujocoSettings& s, const SettingsOverrides& given);
+void validate_mujoco_settings(const MujocoSettings& s, const SettingsOverrides& given,
+                              MujocoLine line = MujocoLine::v2);
 
 }  // namespace pb::internal::mujoco

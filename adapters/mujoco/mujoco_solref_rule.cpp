@@ -28,6 +28,16 @@ SolrefRule::SolrefRule(const Case& c, mjModel* model, const ModelLayout& layout)
   rows_.reserve(static_cast<std::size_t>(model->nconmax > 0 ? model->nconmax : 64));
 }
 
+nlohmann::json SolrefRule::seen_json() const {
+  return {{"what", "over this run: the most pressed contacts of one pair in one step, and the "
+                   "largest spread factor sigma = delta / delta_w the rule applied, and the most "
+                   "contacts fused into another in one step (a vertex two convex pieces share, "
+                   "reported by both: one contact, exclude = 2)"},
+          {"most_rows", most_rows_},
+          {"most_fused", fused_},
+          {"largest_sigma", largest_scale_}};
+}
+
 void SolrefRule::hook(void* self, const mjModel* m, mjData* d) {
   static_cast<SolrefRule*>(self)->apply(m, d);
 }

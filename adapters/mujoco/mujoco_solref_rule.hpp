@@ -33,6 +33,7 @@
 
 #include <mujoco/mujoco.h>
 
+#include <nlohmann/json.hpp>
 #include <vector>
 
 #include "mujoco_model.hpp"
@@ -65,6 +66,8 @@ class SolrefRule {
   // the most contacts fused into another in one evaluation (a vertex shared
   // by two convex pieces, mujoco_shared_vertex.hpp)
   [[nodiscard]] int most_fused() const { return fused_; }
+  // the three above, as a run's mapping states them ("solref_rule_seen")
+  [[nodiscard]] nlohmann::json seen_json() const;
 
  private:
   void apply(const mjModel* m, mjData* d);

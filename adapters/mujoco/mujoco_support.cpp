@@ -47,7 +47,7 @@ std::string unsupported_reason(const Case& c) {
 
 }  // namespace
 
-Capability mujoco_capability(const Case& c, const std::string& mode) {
+Capability mujoco_capability(const Case& c, const std::string& mode, MujocoLine line) {
   const bool inject = mode == "inject";
   if (auto r = unsupported_reason(c); !r.empty()) return {Support::unsupported, r};
   if (inject) {
@@ -72,8 +72,11 @@ Capability mujoco_capability(const Case& c, const std::string& mode) {
     const GeomType ga = geom_type(a.shape);
     const GeomType gb = geom_type(b.shape);
     if (collider(ga, gb) == Collider::mpr) {
-      add(fmt::format("{} penetration from libccd MPR (approximate depth)",
-                      collider_description(ga, gb)));
+      const char* by = line == MujocoLine::v3
+                           ? "MuJoCo 3's native convex collider (nativeccd, its default since "
+                             "3.3.0)"
+                           : "libccd MPR (approximate depth)";
+      add(fmt::format("{} penetration from {}", collider_description(ga, gb), by));
     }
     if (inject) continue;
     add("the law as a soft constraint near d = 1: gravity's share of the contact load is "

@@ -23,6 +23,7 @@
 #include "report_svg.hpp"
 #include "report_tables.hpp"
 #include "report_verdict.hpp"
+#include "report_versions.hpp"
 #include "report_web_assets.hpp"
 #include "report_work_precision.hpp"
 #include "report_work_precision_svg.hpp"
@@ -200,6 +201,9 @@ ReportSummary write_report(const ReportOptions& options) {
     report.tables.push_back(internal::timings_table(results, cases));
     report.tables.push_back(
         internal::metrics_table(metrics, outcomes, !options.thresholds.empty()));
+    // MuJoCo 2.2.2 and 3.3.8 side by side, when the file has both
+    auto versions = internal::mujoco_versions_table(metrics, outcomes);
+    if (!versions.rows.empty()) report.tables.push_back(std::move(versions));
   }
   if (!options.thresholds.empty()) {
     report.tables.push_back(internal::unmatched_thresholds_table(outcomes));

@@ -16,8 +16,8 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // SPEC §5 engine names in report order (the truth first)
-constexpr std::array<const char*, 5> kEngineOrder = {"analytic", "reference", "mujoco", "box2d",
-                                                     "ode"};
+constexpr std::array<const char*, 6> kEngineOrder = {"analytic", "reference", "mujoco",
+                                                     "mujoco3",  "box2d",     "ode"};
 
 // what one figure shows, before its series are extracted
 struct FigureSpec {

@@ -64,10 +64,10 @@ std::string engine_colour(const std::string& engine, std::size_t index) {
   if (engine == "analytic") return "#000000";
   if (engine == "reference") return "#1f77b4";
   if (engine == "mujoco") return "#ff7f0e";
+  if (engine == "mujoco3") return "#9467bd";
   if (engine == "box2d") return "#2ca02c";
   if (engine == "ode") return "#d62728";
-  static constexpr std::array<const char*, 4> kOthers = {"#9467bd", "#8c564b", "#e377c2",
-                                                         "#17becf"};
+  static constexpr std::array<const char*, 3> kOthers = {"#8c564b", "#e377c2", "#17becf"};
   return kOthers[index % kOthers.size()];
 }
 

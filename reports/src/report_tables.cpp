@@ -101,7 +101,10 @@ Table timings_table(const ResultsFile& results, const std::vector<Case>& cases) 
   t.note =
       "Wall-clock time of each run (model build and stepping) on the machine that ran it (CPU "
       "in the provenance); compare runs of one machine only. A run repeated (`run --repeat R`) "
-      "shows the median of its R wall times and their range.";
+      "shows the median of its R wall times and their range. Engine mujoco3 is MuJoCo 3.3.8's "
+      "WebAssembly build run by Node, its steps exchanged with planarbench over a pipe (a round "
+      "trip per step with a contact in the constraint): its times are those of that build and "
+      "that exchange, not comparable with the native builds'.";
   t.columns = {"case",  "engine",       "status",       "wall time, s", "runs",
                "range, s", "steps", "simulated, s", "wall per simulated s"};
   for (std::size_t ci = 0; ci < results.cases.size(); ++ci) {

@@ -114,7 +114,7 @@ TEST_P(TangentialForce, AHeldSlabFeelsTheSlopesShareInsideTheCone) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Engines, TangentialForce,
-                         testing::Values("reference", "mujoco", "box2d", "ode"),
+                         testing::Values("reference", "mujoco", "mujoco3", "box2d", "ode"),
                          [](const testing::TestParamInfo<std::string>& i) { return i.param; });
 
 }  // namespace

@@ -24,7 +24,7 @@ import unittest
 ENGINES_BIN, FORCE_LAWS_BIN, CASES_DIR, BUILD_TYPE = (sys.argv[1:5] + [""] * 4)[:4]
 
 # SPEC §5 engine names
-ENGINE_NAMES = ["analytic", "reference", "mujoco", "box2d", "ode"]
+ENGINE_NAMES = ["analytic", "reference", "mujoco", "mujoco3", "box2d", "ode"]
 
 
 def case_names():

@@ -175,7 +175,7 @@ void expect_only(const fs::path& dir, const fs::path& file) {
 // A spin of 1e200 rad/s, which the case format allows, trips libode's
 // dIASSERT in dxNormalize4 at its first step: SIGABRT. It ended the whole
 // command before (every engine's results lost). Now ODE's run is diverged,
-// naming the signal and what ODE printed, and the other four are written.
+// naming the signal and what ODE printed, and the other five are written.
 TEST(Isolation, AnAbortInsideOdeLosesOnlyOdesRun) {
   const fs::path dir = fresh_dir("abort");
   const fs::path out = dir / "spin.h5";
@@ -188,7 +188,7 @@ TEST(Isolation, AnAbortInsideOdeLosesOnlyOdesRun) {
 
   const pb::ResultsFile f = pb::read_results_file(out);
   ASSERT_EQ(f.cases.size(), 1u);
-  EXPECT_EQ(f.cases[0].runs.size(), 5u);
+  EXPECT_EQ(f.cases[0].runs.size(), 6u);  // every engine of the registry, mujoco3 included
   const pb::RunResult* ode = find_run(f, "ode");
   ASSERT_NE(ode, nullptr);
   EXPECT_EQ(ode->status, pb::RunStatus::diverged);
@@ -202,7 +202,7 @@ TEST(Isolation, AnAbortInsideOdeLosesOnlyOdesRun) {
   ASSERT_NE(analytic, nullptr);
   EXPECT_EQ(analytic->status, pb::RunStatus::ok) << analytic->reason;
   EXPECT_FALSE(analytic->bodies.at(0).time_s.empty());
-  for (const char* engine : {"reference", "mujoco", "box2d"}) {
+  for (const char* engine : {"reference", "mujoco", "mujoco3", "box2d"}) {
     const pb::RunResult* e = find_run(f, engine);
     ASSERT_NE(e, nullptr) << engine;
     // whatever each makes of the spin, it is its own verdict, with a reason

@@ -23,7 +23,7 @@ import { pathToFileURL } from 'node:url';
 
 const SETUP = 'run scripts/setup_web.sh (it installs Debian\'s chromium and the pinned npm packages)';
 const CHROMIUM = '/usr/bin/chromium';
-const ENGINES = ['analytic', 'reference', 'mujoco', 'box2d', 'ode'];
+const ENGINES = ['analytic', 'reference', 'mujoco', 'mujoco3', 'box2d', 'ode'];
 
 let failures = 0;
 function check(ok, what) {
@@ -318,6 +318,15 @@ try {
 
   // the measured-impacts section (issue 23): its convention, models and fits
   // tables, its four figures (the CDF of eps, predicted against measured x', y', theta')
+  // issue 33: MuJoCo 2.2.2 and 3.3.8 side by side, one row per case with both
+  const versionRows = await page.evaluate(() => [...document.querySelectorAll('#tbl-mujoco_versions tbody tr')]
+    .map((tr) => [...tr.cells].map((td) => td.textContent.trim())));
+  check(versionRows.length === CASES.length,
+    `the MuJoCo versions table has a row per case (${versionRows.length} of ${CASES.length})`);
+  const ball = versionRows.find((r) => r[0] === 'falling_ball');
+  // falling_ball: one sphere-plane contact, computed alike by both versions (mujoco3_engine_test)
+  check(ball !== undefined && Number(ball[1]) > 0 && ball[1] === ball[2],
+    `falling_ball: every metric the same in 2.2.2 and 3.3.8 (${ball ? ball[2] + ' of ' + ball[1] : 'no row'})`);
   const impactPlots = await page.locator('#impacts .wp-plot svg').count();
   check(impactPlots === 4, `measured-impacts section draws its 4 figures: ${impactPlots}`);
   const impactTables = await page.locator('#impacts table').count();
