@@ -8,6 +8,7 @@
 #include "planarbench/did_you_mean.hpp"
 #include "planarbench/engines.hpp"
 #include "planarbench/errors.hpp"
+#include "planarbench/impacts/impact_residual.hpp"
 
 namespace pb::cli {
 
@@ -75,7 +76,9 @@ std::vector<std::unique_ptr<ImpactModel>> impact_models(const std::string& engin
   std::vector<std::unique_ptr<ImpactModel>> models;
   for (const std::string& name : chosen) models.push_back(engine_impact_model(spec_of(name)));
   models.push_back(rigid_impact_model());
+  models.push_back(rigid_compliant_model());
   models.push_back(naive_bounce_model());
+  models.push_back(learned_residual_model());
   if (stored) {
     for (std::size_t k = 0; k < kStoredModelNames.size(); ++k) models.push_back(stored_impact_model(k));
   }

@@ -56,6 +56,8 @@ std::string colour_of(const std::string& model, std::size_t index) {
   if (model == "reference_exact") return "#17becf";
   if (model == "rigid") return "#000000";
   if (model == "naive_bounce") return "#7f7f7f";
+  if (model == "rigid_compliant") return "#8c564b";
+  if (model == "learned_residual") return "#e377c2";
   if (model.rfind("stored_", 0) == 0) return "#bcbd22";
   return engine_colour(model, index);
 }
@@ -85,7 +87,9 @@ Table identification_table(const Json& d) {
                         fmt::format("{:.4g}", p.at("fold_min").get<double>()),
                         fmt::format("{:.4g}", p.at("fold_max").get<double>()),
                         p.at("log_scale").get<bool>() ? fmt::format("x/ {:.2f}", 1.0 + w)
-                                                      : fmt::format("{:.1f} %", 100.0 * w),
+                        : p.value("relative_to", "value") == "range"
+                            ? fmt::format("{:.1f} % of the range", 100.0 * w)
+                            : fmt::format("{:.1f} %", 100.0 * w),
                         ok                                          ? "yes"
                         : p.at("whole_outside_folds").get<bool>() ? "no (whole-file fit outside the folds')"
                                                                     : "no"});

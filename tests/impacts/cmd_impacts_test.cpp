@@ -63,11 +63,12 @@ TEST(CmdImpacts, FitThenScoreFrozenParametersOnAnotherFile) {
   ASSERT_EQ(fit.exit.code, 0) << fit.err;
   const nlohmann::json f = read_study(dir / "fit.h5");
   EXPECT_EQ(f.at("kind"), "impacts_fit");
-  // models: 2 engines + rigid + naive bounce (no v_models in the file: no stored ones)
+  // models: 2 engines + rigid, rigid_compliant, naive bounce, learned_residual (no v_models
+  // in the file: no stored ones)
   const auto& models = f.at("description").at("models");
-  ASSERT_EQ(models.size(), 4u);
+  ASSERT_EQ(models.size(), 6u);
   // every impact judged once per model, cross-validated
-  EXPECT_EQ(f.at("engine").size(), 4u * 40u);
+  EXPECT_EQ(f.at("engine").size(), 6u * 40u);
   for (const auto& s : f.at("series")) EXPECT_EQ(s, "cross_validated");
   // the convention of the synthetic file is found: both signs flipped
   const auto& conv = f.at("description").at("convention");

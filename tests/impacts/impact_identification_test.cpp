@@ -54,3 +54,23 @@ TEST(ParameterSpread, FixedParametersAreNoneAndAnOptimumOutsideTheFoldsIsFlagged
 
 }  // namespace
 }  // namespace pb
+
+namespace pb {
+namespace {
+
+// a value fitted to 0 (a slope, e_t): its width relative to the search range
+// (2 SE / (upper - lower)), as a relative width of 0 would be 0 / 0
+TEST(ParameterSpread, AValueAtZeroIsJudgedAgainstTheSearchRange) {
+  const std::vector<ImpactParameter> specs = {{"slope", "s/m", -1.0, 1.0, 0.0, false, ""}};
+  const std::vector<std::vector<double>> folds = {{0.0}, {0.01}, {-0.01}, {0.02}, {-0.02}};
+  const auto s = parameter_spread(specs, {0.0}, folds);
+  ASSERT_EQ(s.size(), 1u);
+  // mean 0, sum of squares 1e-3: SE = sqrt(4/5 x 1e-3) = 0.028284
+  EXPECT_NEAR(s[0].jackknife_se, std::sqrt(0.8e-3), 1e-15);
+  EXPECT_NEAR(s[0].half_width, 2.0 * std::sqrt(0.8e-3) / 2.0, 1e-15);
+  EXPECT_EQ(s[0].relative_to, "range");
+  EXPECT_TRUE(s[0].identified);  // 2.8 % of the range
+}
+
+}  // namespace
+}  // namespace pb

@@ -150,6 +150,48 @@ TEST(RigidImpact, NewtonRestitutionAtTheContactPointAndTheMomentumAboutIt) {
   }
 }
 
+// rigid_compliant (issue 34): with e1 = 0, e_t = 0 and k unscaled it is the
+// rigid law, bit for bit; inside the cone the contact point's tangential
+// velocity rebounds to -e_t u_t and the normal one to -e u_n, e = e0 + e1 x'
+// (clamped); sliding, e_t changes nothing (Coulomb caps the impulse).
+TEST(RigidImpact, CompliantLawRebondsTheTangentialVelocityByEt) {
+  for (const auto& pre : {pb::test::impact_state(0.4, 0.5, -2.5, 5.0),
+                          pb::test::impact_state(-1.2, 0.9, -2.3, -10.0),
+                          pb::test::impact_state(2.9, 0.2, -2.8, 20.0)}) {
+    const pb::Vec2 r = pb::lowest_point_offset(kObject, pre.angle_rad);
+    const pb::Vec2 u0 = contact_velocity(pre, r);
+    for (double e : {0.0, 0.6}) {
+      for (double mu : {0.0, 0.19, 5.0}) {
+        const pb::ImpactState rigid = pb::rigid_impact(kObject, pre, e, mu);
+        const pb::ImpactState same =
+            pb::rigid_compliant_impact(kObject, pre, pb::CompliantImpactLaw{e, 0.0, 0.0, mu, 1.0});
+        EXPECT_EQ(rigid.velocity_mps, same.velocity_mps);
+        EXPECT_EQ(rigid.angular_velocity_radps, same.angular_velocity_radps);
+      }
+    }
+    // ample friction: the contact sticks, u_t -> -e_t u_t; e = e0 + e1 x'
+    const pb::CompliantImpactLaw stick{0.5, 0.1, 0.3, 5.0, 1.0};
+    const pb::ImpactState post = pb::rigid_compliant_impact(kObject, pre, stick);
+    const pb::Vec2 u1 = contact_velocity(post, r);
+    const double e = 0.5 + 0.1 * pre.velocity_mps.x();
+    EXPECT_NEAR(u1.x(), -0.3 * u0.x(), 1e-12);
+    EXPECT_NEAR(u1.y(), -e * u0.y(), 1e-12);
+    EXPECT_NEAR(pb::angular_momentum_about(kObject, post, r),
+                pb::angular_momentum_about(kObject, pre, r), 1e-15);
+    // no friction: the tangential restitution has nothing to act with
+    const pb::ImpactState smooth =
+        pb::rigid_compliant_impact(kObject, pre, pb::CompliantImpactLaw{0.5, 0.0, 0.3, 0.0, 1.0});
+    EXPECT_EQ(smooth.velocity_mps.x(), pre.velocity_mps.x());
+  }
+  // the slope's restitution is clamped to [0, 1]: at x' = 0.5 m/s and slope
+  // 10 s/m, e = 1 (not 5.5)
+  const auto pre = pb::test::impact_state(0.4, 0.5, -2.5, 5.0);
+  const pb::Vec2 r = pb::lowest_point_offset(kObject, pre.angle_rad);
+  const pb::ImpactState post =
+      pb::rigid_compliant_impact(kObject, pre, pb::CompliantImpactLaw{0.5, 10.0, 0.0, 0.0, 1.0});
+  EXPECT_NEAR(contact_velocity(post, r).y(), -contact_velocity(pre, r).y(), 1e-12);
+}
+
 TEST(RigidImpact, NaiveBounceReversesOnlyTheVerticalSpeed) {
   const pb::ImpactState post = pb::naive_bounce(pb::test::impact_state(0.4, 0.5, -2.5, 5.0), 0.53);
   EXPECT_EQ(post.velocity_mps.x(), 0.5);

@@ -23,7 +23,8 @@ def main(path):
             "description": json.loads(c.attrs["description"]),
             "engine": [e.decode() if isinstance(e, bytes) else str(e) for e in runs["engine"][()]],
             "series": [e.decode() if isinstance(e, bytes) else str(e) for e in runs["series"][()]],
-            "eps": [float(x) for x in runs["metric"]["eps"][()]],
+            # a failed prediction's eps is NaN: null in JSON
+            "eps": [float(x) if np.isfinite(x) else None for x in runs["metric"]["eps"][()]],
         }
         metric = runs["metric"]
         if "e_f" in metric:  # a group of one dataset per metric; files before issue 34 lack it

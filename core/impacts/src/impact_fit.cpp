@@ -123,7 +123,7 @@ FitResult fit_impacts(const ImpactModel& model, const ImpactTable& table,
   opt.set_lower_bounds(std::vector<double>(free.size(), 0.0));
   opt.set_upper_bounds(std::vector<double>(free.size(), 1.0));
   opt.set_initial_step(options.initial_step);
-  opt.set_maxeval(options.max_evaluations);
+  opt.set_maxeval(std::max(options.max_evaluations, model.evaluations_hint()));
   opt.set_xtol_abs(1e-4);  // 1e-4 of a parameter's range: far below what the median resolves
   // the objective on the unit cube of the free parameters
   // (an exception inside it is kept and rethrown after NLopt has stopped:

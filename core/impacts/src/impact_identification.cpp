@@ -36,8 +36,16 @@ std::vector<ParameterSpread> parameter_spread(const std::vector<ImpactParameter>
       sum += d * d;
     }
     s.jackknife_se = std::sqrt((k - 1.0) / k * sum);
-    s.half_width = p.log_scale ? std::expm1(2.0 * s.jackknife_se)
-                               : 2.0 * s.jackknife_se / std::abs(s.whole);
+    const double range = p.upper - p.lower;
+    if (p.log_scale) {
+      s.half_width = std::expm1(2.0 * s.jackknife_se);
+      s.relative_to = "log";
+    } else if (std::abs(s.whole) <= 1e-6 * range) {
+      s.half_width = 2.0 * s.jackknife_se / range;
+      s.relative_to = "range";
+    } else {
+      s.half_width = 2.0 * s.jackknife_se / std::abs(s.whole);
+    }
     s.identified = s.half_width <= kIdentifiedHalfWidth;
     s.whole_outside_folds = s.whole < s.fold_min || s.whole > s.fold_max;
     out.push_back(s);

@@ -120,6 +120,43 @@ class RigidModel final : public ImpactModel {
   bool naive_;
 };
 
+class CompliantPredictor final : public ImpactPredictor {
+ public:
+  ImpactOutcome predict(const ImpactTable& table, std::size_t i,
+                        const std::vector<double>& p) override {
+    ImpactOutcome out;
+    out.after = rigid_compliant_impact(table.object, table.before[i],
+                                       CompliantImpactLaw{p[0], p[1], p[2], p[3], p[4]});
+    return out;
+  }
+};
+
+class CompliantModel final : public ImpactModel {
+ public:
+  std::string name() const override { return "rigid_compliant"; }
+  std::string kind() const override { return "baseline"; }
+  std::string description() const override {
+    return "rigid impact at the contact point with restitution e0 + e1 x' (an empirical law "
+           "of the pre-impact state) and Stronge's tangential restitution e_t capped by "
+           "Coulomb mu (tangential compliance: the slip can reverse); k scaled";
+  }
+  std::vector<ImpactParameter> parameters() const override {
+    return {{"restitution", "-", 0.0, 1.0, 0.6, false, "Newton's e0 at x' = 0"},
+            {"restitution_slope", "s/m", -1.0, 1.0, 0.0, false,
+             "e1: de/dx', restitution's change with the pre-impact x'"},
+            {"tangential_restitution", "-", 0.0, 1.0, 0.0, false,
+             "Stronge's e_t: a sticking contact's tangential velocity -> -e_t u_t"},
+            {"friction", "-", 0.0, 1.0, 0.2, false, "Coulomb mu"},
+            {"gyration_scale", "-", 0.8, 1.2, 1.0, false,
+             "k / k_measured, the radius of gyration's scale"}};
+  }
+  // a closed form: a Nelder-Mead simplex in 5 dimensions needs a few hundred
+  int evaluations_hint() const override { return 600; }
+  std::unique_ptr<ImpactPredictor> predictor() const override {
+    return std::make_unique<CompliantPredictor>();
+  }
+};
+
 // ---- the dataset's stored predictions ------------------------------------------
 
 class StoredPredictor final : public ImpactPredictor {
@@ -166,6 +203,7 @@ std::unique_ptr<ImpactModel> engine_impact_model(EngineModelSpec spec) {
   return std::make_unique<EngineModel>(std::move(spec));
 }
 std::unique_ptr<ImpactModel> rigid_impact_model() { return std::make_unique<RigidModel>(false); }
+std::unique_ptr<ImpactModel> rigid_compliant_model() { return std::make_unique<CompliantModel>(); }
 std::unique_ptr<ImpactModel> naive_bounce_model() { return std::make_unique<RigidModel>(true); }
 std::unique_ptr<ImpactModel> stored_impact_model(std::size_t k) {
   return std::make_unique<StoredModel>(k);

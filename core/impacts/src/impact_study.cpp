@@ -35,9 +35,12 @@ FoldFit run_fold_fit(const ImpactModel& model, const ImpactTable& table,
   for (std::size_t i = 0; i < every.size(); ++i) every[i] = i;
   const std::vector<std::size_t> fitted =
       fold == kWholeFile ? every : complement(table.size(), folds.at(static_cast<std::size_t>(fold)));
-  f.fit = fit_impacts(model, table, fitted, options);
+  // a learned model learns from the fold's training impacts only
+  const std::unique_ptr<ImpactModel> trained = model.trained(table, fitted, options.jobs);
+  const ImpactModel& used = trained ? *trained : model;
+  f.fit = fit_impacts(used, table, fitted, options);
   f.predicted = fold == kWholeFile ? every : folds.at(static_cast<std::size_t>(fold));
-  f.outcomes = predict_impacts(model, table, f.predicted, f.fit.parameters, options.jobs);
+  f.outcomes = predict_impacts(used, table, f.predicted, f.fit.parameters, options.jobs);
   f.wall_time_s = seconds_since(t0);
   return f;
 }
@@ -148,6 +151,7 @@ nlohmann::ordered_json identification_json(const ImpactModel& m, const std::vect
                    {"folds", p.folds},
                    {"jackknife_se", p.jackknife_se},
                    {"half_width", p.half_width},
+                   {"relative_to", p.relative_to},
                    {"identified", p.identified},
                    {"whole_outside_folds", p.whole_outside_folds}});
   }

@@ -31,8 +31,11 @@ struct ParameterSpread {
   int folds = 0;
   double jackknife_se = 0.0;  // of the value, or of its natural log (log_scale)
   // relative half-width of the +-2 SE interval: 2 SE / |whole|, or
-  // exp(2 SE) - 1 on a log scale
+  // exp(2 SE) - 1 on a log scale; for a value at zero (|whole| below 1e-6
+  // of the search range: a slope or a coefficient the data set to 0, where a
+  // relative width means nothing) 2 SE / (upper - lower), relative_to "range"
   double half_width = 0.0;
+  std::string relative_to = "value";  // "value", "log" or "range"
   bool identified = false;    // half_width <= kIdentifiedHalfWidth
   bool whole_outside_folds = false;  // the whole-file optimum outside every fold's range
 };

@@ -64,6 +64,18 @@ class ImpactModel {
   [[nodiscard]] virtual std::unique_ptr<ImpactPredictor> predictor() const = 0;
   // the engine's version ("" for the project's own models)
   [[nodiscard]] virtual std::string version() const { return ""; }
+  // the fewest objective evaluations its fit deserves (0: the command's
+  // --max-evaluations); a closed form costs microseconds an evaluation
+  [[nodiscard]] virtual int evaluations_hint() const { return 0; }
+  // A model that learns from data (kind "learned"): the model trained on the
+  // impacts `training` of `table` only (a fold's training set), whose
+  // predictions are then made; nullptr for every other model. `jobs`
+  // threads for its own fits.
+  [[nodiscard]] virtual std::unique_ptr<ImpactModel> trained(
+      const ImpactTable& /*table*/, const std::vector<std::size_t>& /*training*/,
+      int /*jobs*/) const {
+    return nullptr;
+  }
 };
 
 using EngineFactory = std::function<std::unique_ptr<Engine>()>;
@@ -86,6 +98,8 @@ struct EngineModelSpec {
 
 // The project's baselines (rigid_impact.hpp): "rigid" (e, mu) and "naive_bounce" (e).
 [[nodiscard]] std::unique_ptr<ImpactModel> rigid_impact_model();
+// "rigid_compliant" (rigid_impact.hpp): e0, de/dx', e_t, mu, k's scale
+[[nodiscard]] std::unique_ptr<ImpactModel> rigid_compliant_model();
 [[nodiscard]] std::unique_ptr<ImpactModel> naive_bounce_model();
 // The dataset's stored prediction number `k` (kStoredModelNames), as given.
 [[nodiscard]] std::unique_ptr<ImpactModel> stored_impact_model(std::size_t k);
