@@ -13,8 +13,8 @@
 namespace pb::cli {
 
 const std::vector<std::string>& impact_engine_names() {
-  static const std::vector<std::string> names = {"reference", "reference_exact", "mujoco", "box2d",
-                                                 "ode"};
+  static const std::vector<std::string> names = {"reference", "reference_exact", "reference_ln",
+                                                 "mujoco",    "box2d",           "ode"};
   return names;
 }
 
@@ -23,7 +23,7 @@ namespace {
 EngineModelSpec spec_of(const std::string& name) {
   EngineModelSpec s;
   s.name = name;
-  s.engine = name == "reference_exact" ? "reference" : name;
+  s.engine = name == "reference_exact" || name == "reference_ln" ? "reference" : name;
   const std::string engine = s.engine;
   s.factory = [engine] { return make_engine(engine); };
   if (name == "reference") {
@@ -31,6 +31,12 @@ EngineModelSpec spec_of(const std::string& name) {
   } else if (name == "reference_exact") {
     s.settings = {{"reference.geometry", "\"exact\""}};
     s.representation = "the reference at exact geometry: the true ellipse against the line";
+  } else if (name == "reference_ln") {
+    s.settings = {{"reference.geometry", "\"exact\""}};
+    s.lankarani_nikravesh = true;
+    s.representation =
+        "the reference at exact geometry with the paper's Lankarani-Nikravesh law (eq. 7: a Hertz "
+        "exponent and the law's restitution fitted, not Kelvin-Voigt's)";
   } else if (name == "mujoco") {
     s.representation = "MuJoCo's ellipsoid geom against a plane (its soft contact, condim 3)";
   } else if (name == "box2d") {

@@ -76,6 +76,28 @@ TEST(ImpactCase, TheArcReachesTheMeasuredStateAtTheTouch) {
   EXPECT_EQ(e.inertia_kgm2, kObject.inertia_kgm2());
 }
 
+// issue 34: the paper's Lankarani-Nikravesh law in place of Kelvin-Voigt,
+// exactly the values given (reference_ln's parameters)
+TEST(ImpactCase, TheLawIsLankaraniNikraveshWhenAsked) {
+  const pb::ImpactState at_touch = pb::test::impact_state(0.8, 0.6, -2.4, 12.0);
+  pb::ImpactLaw law;
+  law.stiffness_n_per_m = 2e6;
+  law.lankarani_nikravesh = true;
+  law.exponent = 1.3;
+  law.restitution = 0.55;
+  law.friction = 0.19;
+  const pb::Case c = pb::impact_case(kObject, at_touch, law, 180);
+  const auto* ln = std::get_if<pb::LankaraniNikravesh>(&c.contacts.at(0).law);
+  ASSERT_NE(ln, nullptr);
+  EXPECT_EQ(ln->stiffness, 2e6);
+  EXPECT_EQ(ln->exponent, 1.3);
+  EXPECT_EQ(ln->restitution, 0.55);
+  EXPECT_EQ(c.contacts.at(0).friction, 0.19);
+  // and Kelvin-Voigt by default
+  EXPECT_TRUE(std::holds_alternative<pb::KelvinVoigt>(
+      pb::impact_case(kObject, at_touch, pb::ImpactLaw{}, 180).contacts.at(0).law));
+}
+
 TEST(ImpactCase, AnArcThatTouchesEarlierIsRefused) {
   // rising lowest point: the spin lifts it faster than the centre falls
   const pb::ImpactState s = pb::test::impact_state(0.6, 0.0, -0.01, -40.0);

@@ -89,8 +89,13 @@ Case impact_case(const ImpactObject& o, const ImpactState& at_touch, const Impac
   pair.name = "ground_ellipse";
   pair.body_a = 0;
   pair.body_b = 1;
-  pair.law = KelvinVoigt{law.stiffness_n_per_m,
-                         2.0 * law.damping_ratio * std::sqrt(law.stiffness_n_per_m * o.mass_kg), 0.0};
+  if (law.lankarani_nikravesh) {
+    pair.law = LankaraniNikravesh{law.stiffness_n_per_m, law.exponent, law.restitution, {}};
+  } else {
+    pair.law = KelvinVoigt{law.stiffness_n_per_m,
+                           2.0 * law.damping_ratio * std::sqrt(law.stiffness_n_per_m * o.mass_kg),
+                           0.0};
+  }
   pair.friction = law.friction;
   c.contacts.push_back(pair);
   return c;

@@ -23,9 +23,14 @@ inline constexpr double kImpactRunLimit_s = 0.06;
 // case's Kelvin-Voigt law (paper eq. 1), each engine expressing it in its own
 // model (mapping() says how), and the pair's Coulomb coefficient (SPEC §7).
 struct ImpactLaw {
-  double stiffness_n_per_m = 1e4;  // N/m, K
+  double stiffness_n_per_m = 1e4;  // N/m, K (N/m^n for Lankarani-Nikravesh)
   double damping_ratio = 0.2;      // -, zeta: c = 2 zeta sqrt(K m), m the object's mass
   double friction = 0.2;           // -, Coulomb mu
+  // Lankarani-Nikravesh instead of Kelvin-Voigt (issue 34: the paper's eq. 7,
+  // a Hertz exponent and restitution e in place of zeta)
+  bool lankarani_nikravesh = false;
+  double exponent = 1.5;           // n
+  double restitution = 0.6;        // e
 };
 
 // The case of one impact; `outline_points` of the ellipse (the reference and

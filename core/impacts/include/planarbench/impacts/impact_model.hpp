@@ -92,6 +92,10 @@ struct EngineModelSpec {
   std::vector<std::pair<std::string, std::string>> settings;
   int outline_points = 180;
   bool fit_stiffness = true;
+  // Lankarani-Nikravesh (K in N/m^n, the exponent n, e, mu) instead of
+  // Kelvin-Voigt (K, zeta, mu): an engine that takes the law as the case
+  // states it (the reference)
+  bool lankarani_nikravesh = false;
   std::string representation;  // one line: how the engine represents the ellipse
 };
 [[nodiscard]] std::unique_ptr<ImpactModel> engine_impact_model(EngineModelSpec spec);
