@@ -310,9 +310,10 @@ void Mujoco3Engine::fetch(Kind command, const std::vector<double>& payload) {
       rec.numbers.insert(rec.numbers.end(), qvel.begin(), qvel.end());
       rec.numbers.insert(rec.numbers.end(), contacts.begin(), contacts.end());
       // a step nobody asked about has no contact in the constraint: the rule
-      // sets nothing there, but it sees the step (a contact's end)
+      // sets nothing there, but it sees the step (a contact's end). With no
+      // pressed contact it reads the contacts only, never the state's
+      // Jacobians: the mirror's kinematics wait for consume()
       if (!asked && fault_step_ < 0) {
-        mirror_state(m, d, qpos, qvel);
         mirror_contacts(m, d, contacts, rec.ncon, kRecordContactNumbers);
         SolrefRule::hook(rule_.get(), m, d);
       }
