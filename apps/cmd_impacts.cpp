@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "campaign_plan.hpp"
 #include "campaign_shards.hpp"
@@ -37,9 +38,11 @@ struct ImpactsOptions {
   std::string work;
   std::string shard;
   std::string params;
+  std::string training_data;  // score: a learned model's training file (default: the fit's)
   int folds = 5;
   std::uint64_t seed = 23;
   int max_evaluations = 40;
+  std::string objective = "median+mean";
   int jobs = 1;
   bool quiet = false;
   ResultsProvenance provenance;
@@ -112,6 +115,16 @@ std::string parameters_text(const ImpactModel& m, const std::vector<double>& val
   return s.empty() ? "-" : s;
 }
 
+// --objective, checked where it is read (run_fit)
+FitObjective objective_of(const ImpactsOptions& opt) {
+  const std::optional<FitObjective> o = parse_fit_objective(opt.objective);
+  if (!o) {
+    throw InputError("--objective", 0, opt.objective,
+                     "is no objective: median+mean (the default) or median");
+  }
+  return *o;
+}
+
 nlohmann::ordered_json study_json(const ImpactsOptions& opt, const LoadedData& d,
                                   const std::vector<std::unique_ptr<ImpactModel>>& models) {
   nlohmann::ordered_json s;
@@ -120,6 +133,7 @@ nlohmann::ordered_json study_json(const ImpactsOptions& opt, const LoadedData& d
   s["folds"] = opt.folds;
   s["seed"] = opt.seed;
   s["max_evaluations"] = opt.max_evaluations;
+  s["objective"] = fit_objective_words(objective_of(opt));
   nlohmann::ordered_json names = nlohmann::ordered_json::array();
   for (const auto& m : models) names.push_back(m->name());
   s["models"] = names;
@@ -245,16 +259,17 @@ std::vector<FoldFit> run_tasks(const ImpactsOptions& opt, const LoadedData& d,
     const ImpactModel& m = model_named(models, t.model);
     FitOptions fo;
     fo.max_evaluations = opt.max_evaluations;
+    fo.objective = objective_of(opt);
     fo.jobs = opt.jobs;
     if (!opt.quiet && isatty(STDERR_FILENO) != 0) {  // a log gets one line per task
-      fo.progress = [&](int evaluation, double median) {
-        std::fprintf(stderr, "\r[%zu/%zu] %s: evaluation %d, median eps %.4f   ", k, tasks.size(),
-                     t.label().c_str(), evaluation, median);
+      fo.progress = [&](int evaluation, double objective) {
+        std::fprintf(stderr, "\r[%zu/%zu] %s: evaluation %d, objective %.4f   ", k, tasks.size(),
+                     t.label().c_str(), evaluation, objective);
       };
     }
     FoldFit f = run_fold_fit(m, d.table, folds, t.fold, fo);
     if (!opt.quiet) {
-      std::fprintf(stderr, "%s[%zu/%zu] %s: %s, median eps %.4f after %d evaluations (%.1f s)\n",
+      std::fprintf(stderr, "%s[%zu/%zu] %s: %s, objective (median + mean eps) %.4f after %d evaluations (%.1f s)\n",
                    fo.progress ? "\r" : "", k,
                    tasks.size(), t.label().c_str(), parameters_text(m, f.fit.parameters).c_str(),
                    f.fit.objective, f.fit.evaluations, f.wall_time_s);
@@ -274,6 +289,7 @@ CampaignTable assemble_fit(const ImpactsOptions& opt, const LoadedData& d,
   h.convention = &d.convention;
   h.folds = opt.folds;
   h.seed = opt.seed;
+  h.objective = objective_of(opt);
   h.command_line = opt.provenance.command_line;
   return impact_study_table(h, pointers(models), d.table, fits);
 }
@@ -286,6 +302,7 @@ int run_fit(const ImpactsOptions& opt) {
   if (opt.max_evaluations < 1 || opt.max_evaluations > 10000) {
     throw InputError("--max-evaluations", 0, std::to_string(opt.max_evaluations), "must be in [1, 10000]");
   }
+  (void)objective_of(opt);  // refused before any work
   if (opt.shard.empty() == opt.out.empty()) {
     throw InputError("impacts fit", 0, "--out, --shard",
                      "give --out FILE (the whole fit here) or --shard K/N with --work DIR (one "
@@ -328,6 +345,7 @@ int run_merge(const ImpactsOptions& opt) {
   ImpactsOptions o = opt;
   o.folds = pins.folds;
   o.seed = pins.seed;
+  o.objective = fit_objective_name(pins.objective);
   const std::vector<std::string>& names = pins.models;
   const std::string& fitted_sha256 = pins.data_sha256;
   if (fitted_sha256 != d.set.sha256) {
@@ -366,7 +384,7 @@ int run_merge(const ImpactsOptions& opt) {
 int run_score(const ImpactsOptions& opt) {
   check_jobs(opt.jobs);
   check_output_file("--out", opt.out);
-  check_not_an_input("--out", opt.out, {opt.data, opt.params});
+  check_not_an_input("--out", opt.out, {opt.data, opt.params, opt.training_data});
   const ResultsFile fit_file = read_results_file(opt.params);
   if (!fit_file.campaign) {
     throw InputError(opt.params, 0, "/campaign", "missing: a fit file of `planarbench impacts fit` is expected");
@@ -382,6 +400,34 @@ int run_score(const ImpactsOptions& opt) {
   std::vector<std::string> names;
   for (const auto& [name, values] : frozen.models) names.push_back(name);
   auto all = impact_models(engine_list(engines_among(names)), !d.set.models.empty());
+  // A learned model's frozen form is the file it learned from (named and
+  // hashed in the fit file) and the fit's training, which is deterministic:
+  // it is trained again on that whole file, as the fit's fold "all" was.
+  // Read once, when a learned model is scored; without it the model's rows
+  // fail, saying why, and the others are scored.
+  std::optional<LoadedData> training;
+  std::string training_problem;
+  auto training_table = [&]() -> const ImpactTable* {
+    if (frozen.data_sha256 == d.set.sha256) return &d.table;
+    if (!training && training_problem.empty()) {
+      ImpactsOptions t = opt;
+      t.data = opt.training_data.empty() ? frozen.data_path : opt.training_data;
+      t.quiet = true;
+      try {
+        LoadedData loaded = load_data(t);
+        if (loaded.set.sha256 != frozen.data_sha256) {
+          training_problem = fmt::format("{} has sha256 {}, the fit's training file {}", t.data,
+                                         loaded.set.sha256.substr(0, 16),
+                                         frozen.data_sha256.substr(0, 16));
+        } else {
+          training = std::move(loaded);
+        }
+      } catch (const std::exception& e) {
+        training_problem = e.what();
+      }
+    }
+    return training ? &training->table : nullptr;
+  };
   std::vector<std::unique_ptr<ImpactModel>> models;
   std::vector<FoldFit> fits;
   for (auto& m : all) {
@@ -412,7 +458,21 @@ int run_score(const ImpactsOptions& opt) {
         }
       }
     }
-    FoldFit f = score_model(*m, d.table, values ? *values : none, opt.jobs);
+    std::unique_ptr<ImpactModel> trained;
+    if (m->kind() == "learned") {
+      if (const ImpactTable* t = training_table()) {
+        std::vector<std::size_t> every(t->size());
+        for (std::size_t i = 0; i < every.size(); ++i) every[i] = i;
+        FitOptions fo;
+        fo.objective = frozen.objective;
+        fo.jobs = opt.jobs;
+        trained = m->trained(*t, every, fo);
+      } else if (!opt.quiet) {
+        std::fprintf(stderr, "impacts: %s is not scored: its training file is not available (%s; "
+                     "give it with --training-data)\n", m->name().c_str(), training_problem.c_str());
+      }
+    }
+    FoldFit f = score_model(trained ? *trained : *m, d.table, values ? *values : none, opt.jobs);
     if (!opt.quiet) std::fprintf(stderr, "%s: scored %zu impacts (%.1f s)\n", m->name().c_str(), f.outcomes.size(), f.wall_time_s);
     fits.push_back(std::move(f));
     models.push_back(std::move(m));
@@ -450,7 +510,7 @@ Action add_impacts_command(CLI::App& app, int argc, char** argv) {
   auto* fit = cmd->add_subcommand(
       "fit",
       "Fit every engine's contact parameters (Kelvin-Voigt K, damping ratio, Coulomb mu) and the "
-      "rigid baselines by NLopt's simplex, minimising the median error: per model one fit per "
+      "rigid baselines by NLopt's simplex (--objective: the median plus the mean error): per model one fit per "
       "cross-validation fold (judged on the fold held out) and one on the whole file (the "
       "parameters `impacts score` uses)");
   data_option(fit);
@@ -466,6 +526,10 @@ Action add_impacts_command(CLI::App& app, int argc, char** argv) {
                   "Objective evaluations per fit (each runs every impact fitted to); a closed-form "
                   "law takes at least its own number (rigid_compliant: 600, microseconds each)")
       ->default_val(40);
+  fit->add_option("--objective", opt->objective,
+                  "What each fit minimises over the eps of its impacts: median+mean (the median "
+                  "plus the mean of min(eps, 1)) or median (the fits before issue 34)")
+      ->default_val("median+mean");
   fit->add_option("--jobs,-j", opt->jobs, "Worker threads (Slurm: $SLURM_CPUS_PER_TASK)")->default_val(1);
   fit->add_option("--shard", opt->shard,
                   "Run only shard K of N (0-based) of the fit's tasks into --work; `impacts merge` "
@@ -485,6 +549,9 @@ Action add_impacts_command(CLI::App& app, int argc, char** argv) {
       ->required()
       ->check(CLI::ExistingFile);
   score->add_option("--out", opt->out, "Score file to write (HDF5, written atomically)")->required();
+  score->add_option("--training-data", opt->training_data,
+                    "The fit's training file, from which a learned model (learned_residual) is "
+                    "trained again (default: the path the fit file names; its sha256 must match)");
   score->add_option("--jobs,-j", opt->jobs, "Worker threads")->default_val(1);
 
   return [opt, fit, merge, score]() {

@@ -45,6 +45,7 @@ struct StudyPins {
   std::string data_sha256;
   int folds = 0;
   std::uint64_t seed = 0;
+  FitObjective objective = FitObjective::median_plus_mean;
   std::vector<std::string> models;
 };
 inline constexpr std::size_t kMaxStudyModels = 64;

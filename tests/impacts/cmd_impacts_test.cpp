@@ -94,6 +94,30 @@ TEST(CmdImpacts, FitThenScoreFrozenParametersOnAnotherFile) {
             f.at("description").at("data").at("sha256"));
   // the rigid law made the data: its baseline, frozen, predicts the other file well
   EXPECT_LT(s.at("description").at("models").at(2).at("scored").at("eps_median").get<double>(), 0.05);
+
+  // learned_residual is scored too: trained again on the file the fit names
+  // (its frozen form), every impact predicted; 0.05 as the rigid law's: its
+  // residual over the law that made the data is noise
+  const auto& learned = s.at("description").at("models").at(5);
+  ASSERT_EQ(learned.at("name"), "learned_residual");
+  EXPECT_EQ(learned.at("scored").at("failed"), 0);
+  EXPECT_LT(learned.at("scored").at("eps_median").get<double>(), 0.05);
+  // the training file moved: its rows fail saying why, the other models are
+  // scored (exit 0); named with --training-data, the same bits as before
+  fs::rename(train, dir / "moved.mat");
+  const Finished without = impacts("score --data " + other.string() + " --params " +
+                                   (dir / "fit.h5").string() + " --out " + (dir / "score2.h5").string());
+  ASSERT_EQ(without.exit.code, 0) << without.err;
+  EXPECT_NE(without.err.find("learned_residual is not scored: its training file is not available"),
+            std::string::npos) << without.err;
+  const nlohmann::json s2 = read_study(dir / "score2.h5");
+  EXPECT_EQ(s2.at("description").at("models").at(5).at("scored").at("failed"), 40);
+  EXPECT_EQ(s2.at("description").at("models").at(2).at("scored"), s.at("description").at("models").at(2).at("scored"));
+  const Finished named = impacts("score --data " + other.string() + " --params " + (dir / "fit.h5").string() +
+                                 " --training-data " + (dir / "moved.mat").string() + " --out " +
+                                 (dir / "score3.h5").string() + " -q");
+  ASSERT_EQ(named.exit.code, 0) << named.err;
+  EXPECT_EQ(read_study(dir / "score3.h5").at("description").at("models").at(5).at("scored"), learned.at("scored"));
 }
 
 // Issue 34: every judged impact also scored in the published metric e_F
@@ -321,6 +345,7 @@ TEST(CmdImpacts, AStudyFileOutsideWhatFitWritesIsRefused) {
                        Bad{"t[\"folds\"] = \"two\"", "folds: is \"two\": must be a non-negative integer"},
                        Bad{"del t[\"seed\"]", "are not what `impacts fit --work` writes"},
                        Bad{"t[\"seed\"] = -1", "seed: is -1: must be a non-negative integer"},
+                       Bad{"t[\"objective\"] = \"the mode\"", "objective: is 'the mode': must be"},
                        // a model name names task files: no path in it (issue 35)
                        Bad{"t[\"models\"][0] = \"../../x\"", "models[0]: is '../../x': a model name"},
                        Bad{"t[\"models\"][1] = t[\"models\"][0]", "models[1]: '"},

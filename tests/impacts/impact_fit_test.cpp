@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <stdexcept>
 
@@ -145,4 +146,20 @@ TEST(ImpactStudy, EveryImpactIsJudgedOnceByAFitThatDidNotSeeIt) {
   const pb::FrozenParameters frozen = pb::frozen_parameters(table, "fit.h5");
   ASSERT_EQ(frozen.models.size(), 1u);
   EXPECT_EQ(frozen.models[0].second, fits[3].fit.parameters);
+}
+
+// The objectives by hand: eps {0.1, 0.2, NaN, 3}: a failure is +inf in the
+// median, so the sorted {0.1, 0.2, 3, inf} have median (0.2 + 3) / 2 = 1.6;
+// the mean of min(eps, 1) with the failure as 1 is (0.1 + 0.2 + 1 + 1) / 4 =
+// 0.575. Their words and names read back as themselves.
+TEST(ImpactFit, TheObjectivesAreTheMedianAndTheCappedMean) {
+  const std::vector<double> eps = {0.1, 0.2, std::nan(""), 3.0};
+  // 1e-15: two additions and a division on numbers near 1
+  EXPECT_NEAR(pb::fit_objective(eps, pb::FitObjective::median), 1.6, 1e-15);
+  EXPECT_NEAR(pb::fit_objective(eps, pb::FitObjective::median_plus_mean), 1.6 + 0.575, 1e-15);
+  for (pb::FitObjective o : {pb::FitObjective::median, pb::FitObjective::median_plus_mean}) {
+    EXPECT_EQ(pb::parse_fit_objective(pb::fit_objective_words(o)), o);
+    EXPECT_EQ(pb::parse_fit_objective(pb::fit_objective_name(o)), o);
+  }
+  EXPECT_FALSE(pb::parse_fit_objective("mean").has_value());
 }

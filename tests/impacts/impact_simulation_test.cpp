@@ -195,3 +195,46 @@ TEST(ImpactSimulation, PredictionsDoNotDependOnTheThreads) {
     EXPECT_EQ(one[k].steps, two[k].steps) << k;
   }
 }
+
+// scaled_impact_case: the same impact in a world of decimetres. Its fields by
+// dimension (lengths and velocities x s, inertia x s^2, gravity x s; a
+// Kelvin-Voigt law unchanged, K delta^n's K x s^(1 - n)), and the motion: the
+// reference at exact geometry (rk45 at rtol 1e-10, its events located)
+// predicts the oblique impact in both worlds alike, read back in m/s.
+TEST(ImpactCase, AScaledWorldIsTheSameImpactInAnotherUnit) {
+  const pb::ImpactState at_touch = pb::test::impact_state(0.9, 0.7, -2.5, 8.0);
+  const pb::ImpactLaw law{5e4, 0.17, 0.18};
+  const double s = 10.0;
+  const pb::Case c = pb::impact_case(kObject, at_touch, law);
+  const pb::Case big = pb::scaled_impact_case(c, s);
+  EXPECT_EQ(big.gravity_mps2, c.gravity_mps2 * s);
+  const pb::Body& b = big.bodies[1];
+  EXPECT_EQ(b.position_m, c.bodies[1].position_m * s);
+  EXPECT_EQ(b.velocity_mps, c.bodies[1].velocity_mps * s);
+  EXPECT_EQ(b.angular_velocity_radps, c.bodies[1].angular_velocity_radps);
+  EXPECT_EQ(b.angle_rad, c.bodies[1].angle_rad);
+  EXPECT_EQ(b.mass_kg, c.bodies[1].mass_kg);
+  EXPECT_DOUBLE_EQ(b.inertia_kgm2, c.bodies[1].inertia_kgm2 * s * s);
+  EXPECT_EQ(std::get<pb::Ellipse>(b.shape).semi_axis_a_m, kObject.semi_axis_a_m * s);
+  EXPECT_EQ(std::get<pb::KelvinVoigt>(big.contacts[0].law).stiffness_n_per_m, law.stiffness_n_per_m);
+  pb::ImpactLaw ln = law;
+  ln.lankarani_nikravesh = true;
+  ln.exponent = 1.5;
+  const pb::Case big_ln = pb::scaled_impact_case(pb::impact_case(kObject, at_touch, ln), s);
+  EXPECT_DOUBLE_EQ(std::get<pb::LankaraniNikravesh>(big_ln.contacts[0].law).stiffness,
+                   ln.stiffness_n_per_m / std::sqrt(s));
+
+  pb::SettingsOverrides exact;
+  exact.set("reference.geometry", "\"exact\"", {"test", 0});
+  const pb::ImpactOutcome one = pb::simulate_impact(*pb::make_engine("reference"), c, exact, kObject);
+  const pb::ImpactOutcome ten = pb::simulate_impact(*pb::make_engine("reference"), big, exact,
+                                                    pb::scaled_impact_object(kObject, s));
+  ASSERT_TRUE(one.ok()) << one.failure;
+  ASSERT_TRUE(ten.ok()) << ten.failure;
+  // 1e-6 m/s: the integrator's rtol 1e-10 on a motion of 2.5 m/s, with its
+  // step control's absolute floors (1e-10 m, which do not scale) on top
+  EXPECT_NEAR(ten.after.velocity_mps.x() / s, one.after.velocity_mps.x(), 1e-6);
+  EXPECT_NEAR(ten.after.velocity_mps.y() / s, one.after.velocity_mps.y(), 1e-6);
+  // 1e-4 rad/s: the same on a spin of ~10 rad/s
+  EXPECT_NEAR(ten.after.angular_velocity_radps, one.after.angular_velocity_radps, 1e-4);
+}

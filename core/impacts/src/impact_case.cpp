@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "planarbench/errors.hpp"
+#include "planarbench/overloaded.hpp"
 
 namespace pb {
 
@@ -99,6 +100,42 @@ Case impact_case(const ImpactObject& o, const ImpactState& at_touch, const Impac
   pair.friction = law.friction;
   c.contacts.push_back(pair);
   return c;
+}
+
+Case scaled_impact_case(Case c, double s) {
+  c.gravity_mps2 *= s;
+  for (Body& b : c.bodies) {
+    std::visit(overloaded{[s](Circle& x) { x.radius_m *= s; },
+                          [s](Ellipse& x) {
+                            x.semi_axis_a_m *= s;
+                            x.semi_axis_b_m *= s;
+                          },
+                          [s](Polygon& x) {
+                            for (Vec2& p : x.points_m) p *= s;
+                          },
+                          [s](HalfPlane& x) { x.extent_m *= s; }},
+               b.shape);
+    b.inertia_kgm2 *= s * s;
+    b.position_m *= s;
+    b.velocity_mps *= s;
+  }
+  // F = K delta^n: force and delta both scale by s, so K by s^(1 - n)
+  for (ContactPair& p : c.contacts) {
+    std::visit(overloaded{[](KelvinVoigt&) {},
+                          [s](Hertz& x) { x.stiffness *= std::pow(s, 1.0 - x.exponent); },
+                          [s](LankaraniNikravesh& x) {
+                            x.stiffness *= std::pow(s, 1.0 - x.exponent);
+                          }},
+               p.law);
+  }
+  return c;
+}
+
+ImpactObject scaled_impact_object(ImpactObject o, double s) {
+  o.semi_axis_a_m *= s;
+  o.semi_axis_b_m *= s;
+  o.gyration_radius_m *= s;
+  return o;
 }
 
 }  // namespace pb

@@ -64,6 +64,32 @@ std::vector<double> impact_errors(const ImpactTable& table, const std::vector<st
   return eps;
 }
 
+double fit_objective(const std::vector<double>& eps, FitObjective objective) {
+  if (eps.empty()) return std::numeric_limits<double>::quiet_NaN();
+  const double median = quantile(eps, 0.5);
+  if (objective == FitObjective::median) return median;
+  double sum = 0.0;
+  for (double e : eps) sum += std::isnan(e) ? 1.0 : std::min(e, 1.0);
+  return median + sum / static_cast<double>(eps.size());
+}
+
+const char* fit_objective_words(FitObjective objective) {
+  return objective == FitObjective::median
+             ? "the median eps"
+             : "the median eps plus the mean of min(eps, 1) (a failed impact: +inf and 1)";
+}
+
+const char* fit_objective_name(FitObjective objective) {
+  return objective == FitObjective::median ? "median" : "median+mean";
+}
+
+std::optional<FitObjective> parse_fit_objective(const std::string& words) {
+  for (FitObjective o : {FitObjective::median_plus_mean, FitObjective::median}) {
+    if (words == fit_objective_words(o) || words == fit_objective_name(o)) return o;
+  }
+  return std::nullopt;
+}
+
 namespace {
 
 double from_unit(const ImpactParameter& p, double u) {
@@ -108,9 +134,9 @@ FitResult fit_impacts(const ImpactModel& model, const ImpactTable& table,
     const std::vector<double> eps = impact_errors(table, indices,
                                                   predict_impacts(model, table, indices, v, options.jobs));
     ++result.evaluations;
-    const double median = quantile(eps, 0.5);
-    if (options.progress) options.progress(result.evaluations, median);
-    return median;
+    const double objective = fit_objective(eps, options.objective);
+    if (options.progress) options.progress(result.evaluations, objective);
+    return objective;
   };
   if (free.empty()) {
     result.parameters = values;
@@ -123,7 +149,8 @@ FitResult fit_impacts(const ImpactModel& model, const ImpactTable& table,
   opt.set_lower_bounds(std::vector<double>(free.size(), 0.0));
   opt.set_upper_bounds(std::vector<double>(free.size(), 1.0));
   opt.set_initial_step(options.initial_step);
-  opt.set_maxeval(std::max(options.max_evaluations, model.evaluations_hint()));
+  const int budget = std::max(options.max_evaluations, model.evaluations_hint());
+  opt.set_maxeval(budget);
   opt.set_xtol_abs(1e-4);  // 1e-4 of a parameter's range: far below what the median resolves
   // the objective on the unit cube of the free parameters
   // (an exception inside it is kept and rethrown after NLopt has stopped:
@@ -133,9 +160,9 @@ FitResult fit_impacts(const ImpactModel& model, const ImpactTable& table,
     try {
       std::vector<double> v = values;
       for (std::size_t f = 0; f < free.size(); ++f) v[free[f]] = from_unit(specs[free[f]], u[f]);
-      const double median = evaluate(v);
+      const double value = evaluate(v);
       // a median of failures is +inf: NLopt needs a finite number
-      return std::isfinite(median) ? median : 1e6;
+      return std::isfinite(value) ? value : 1e6;
     } catch (...) {
       failed = std::current_exception();
       throw nlopt::forced_stop();
@@ -150,13 +177,27 @@ FitResult fit_impacts(const ImpactModel& model, const ImpactTable& table,
   for (std::size_t f = 0; f < free.size(); ++f) u[f] = to_unit(specs[free[f]], specs[free[f]].start);
   double best = 0.0;
   nlopt::result r = nlopt::FAILURE;
-  try {
-    r = opt.optimize(u, best);
-  } catch (const nlopt::roundoff_limited&) {
-    r = nlopt::SUCCESS;  // the best point so far is in u
-  } catch (...) {
-    if (failed) std::rethrow_exception(failed);
-    throw;
+  // A simplex that collapsed (xtol) with evaluations left starts again at its
+  // best point with a fresh simplex, while that still improves the objective
+  // by more than 1e-6: Nelder-Mead's collapse on a rough objective is not a
+  // minimum (the remedy of Nelder-Mead with restarts; a model that runs out of
+  // evaluations, every engine at 40, is not restarted)
+  for (double previous = std::numeric_limits<double>::infinity();;) {
+    try {
+      r = opt.optimize(u, best);
+    } catch (const nlopt::roundoff_limited&) {
+      r = nlopt::SUCCESS;  // the best point so far is in u
+    } catch (...) {
+      if (failed) std::rethrow_exception(failed);
+      throw;
+    }
+    const int left = budget - result.evaluations;
+    if (r != nlopt::XTOL_REACHED || left < static_cast<int>(4 * free.size()) ||
+        !(best < previous - 1e-6)) {
+      break;
+    }
+    previous = best;
+    opt.set_maxeval(left);
   }
   for (std::size_t f = 0; f < free.size(); ++f) values[free[f]] = from_unit(specs[free[f]], u[f]);
   result.parameters = values;

@@ -47,7 +47,12 @@ class EnginePredictor final : public ImpactPredictor {
       law = ImpactLaw{p[0], 0.0, p[3], true, p[1], p[2]};
     }
     const Case c = impact_case(table.object, table.before[i], law, spec_.outline_points);
-    return simulate_impact(*engine_, c, overrides_, table.object);
+    const double s = spec_.length_scale;
+    if (s == 1.0) return simulate_impact(*engine_, c, overrides_, table.object);
+    ImpactOutcome out = simulate_impact(*engine_, scaled_impact_case(c, s), overrides_,
+                                        scaled_impact_object(table.object, s));
+    out.after.velocity_mps /= s;
+    return out;
   }
 
  private:
@@ -126,6 +131,8 @@ class RigidModel final : public ImpactModel {
     if (!naive_) p.push_back({"friction", "-", 0.0, 1.0, 0.2, false, "Coulomb mu"});
     return p;
   }
+  // a closed form: converged, not cut at an engine's 40 evaluations
+  int evaluations_hint() const override { return 300; }
   std::unique_ptr<ImpactPredictor> predictor() const override {
     return std::make_unique<RigidPredictor>(naive_);
   }
@@ -164,8 +171,9 @@ class CompliantModel final : public ImpactModel {
             {"gyration_scale", "-", 0.8, 1.2, 1.0, false,
              "k / k_measured, the radius of gyration's scale"}};
   }
-  // a closed form: a Nelder-Mead simplex in 5 dimensions needs a few hundred
-  int evaluations_hint() const override { return 600; }
+  // a closed form (~0.5 ms an evaluation): a Nelder-Mead simplex in 5
+  // dimensions needs a few hundred, and its restarts as many again
+  int evaluations_hint() const override { return 2000; }
   std::unique_ptr<ImpactPredictor> predictor() const override {
     return std::make_unique<CompliantPredictor>();
   }

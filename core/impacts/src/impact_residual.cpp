@@ -139,8 +139,8 @@ class UntrainedPredictor final : public ImpactPredictor {
   ImpactOutcome predict(const ImpactTable&, std::size_t, const std::vector<double>&) override {
     ImpactOutcome out;
     out.failure =
-        "learned_residual predicts only after training on a fit's training impacts (impacts "
-        "fit); frozen parameters on another file do not define it";
+        "learned_residual predicts only after training on a fit's training impacts: `impacts "
+        "score` trains it on the fit's training file, which was not available";
     return out;
   }
 };
@@ -201,18 +201,19 @@ class ResidualModel final : public ImpactModel {
   }
   std::unique_ptr<ImpactModel> trained(const ImpactTable& table,
                                        const std::vector<std::size_t>& training,
-                                       int jobs) const override;
+                                       const FitOptions& options) const override;
 };
 
 std::unique_ptr<ImpactModel> ResidualModel::trained(const ImpactTable& table,
                                                     const std::vector<std::size_t>& training,
-                                                    int jobs) const {
+                                                    const FitOptions& options) const {
   auto t = std::make_shared<Trained>();
   // the physics law, fitted on the training impacts alone
   const std::unique_ptr<ImpactModel> law = rigid_compliant_model();
-  FitOptions options;
-  options.jobs = jobs;
-  t->law = fit_impacts(*law, table, training, options).parameters;
+  FitOptions law_options;  // no progress: the law's evaluations are not the task's
+  law_options.objective = options.objective;
+  law_options.jobs = options.jobs;
+  t->law = fit_impacts(*law, table, training, law_options).parameters;
 
   // standardised features and the law's residuals on the training impacts
   const std::size_t n = training.size();
@@ -241,7 +242,7 @@ std::unique_ptr<ImpactModel> ResidualModel::trained(const ImpactTable& table,
             table.after[i].velocity_mps.y() - base[k].velocity_mps.y(),
             table.after[i].angular_velocity_radps - base[k].angular_velocity_radps};
   }
-  // l and lambda: the median eps of the leave-one-out predictions
+  // l and lambda: the fit's objective over the leave-one-out predictions
   double best = std::numeric_limits<double>::infinity();
   for (const double l : kResidualLengthScales) {
     auto ridge = std::make_shared<const KernelRidge>(t->x, l);
@@ -257,9 +258,9 @@ std::unique_ptr<ImpactModel> ResidualModel::trained(const ImpactTable& table,
                               table.after[i].velocities())
                      .eps;
       }
-      const double median = quantile(eps, 0.5);
-      if (median < best) {
-        best = median;
+      const double objective = fit_objective(eps, options.objective);
+      if (objective < best) {
+        best = objective;
         t->ridge = ridge;
         t->length_scale = l;
         t->lambda = lambda;

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "planarbench/errors.hpp"
@@ -36,7 +37,7 @@ FoldFit run_fold_fit(const ImpactModel& model, const ImpactTable& table,
   const std::vector<std::size_t> fitted =
       fold == kWholeFile ? every : complement(table.size(), folds.at(static_cast<std::size_t>(fold)));
   // a learned model learns from the fold's training impacts only
-  const std::unique_ptr<ImpactModel> trained = model.trained(table, fitted, options.jobs);
+  const std::unique_ptr<ImpactModel> trained = model.trained(table, fitted, options);
   const ImpactModel& used = trained ? *trained : model;
   f.fit = fit_impacts(used, table, fitted, options);
   f.predicted = fold == kWholeFile ? every : folds.at(static_cast<std::size_t>(fold));
@@ -99,7 +100,7 @@ nlohmann::ordered_json summary_json(const Judged& j) {
   nlohmann::ordered_json out;
   out["impacts"] = s.count;
   out["failed"] = s.failed;
-  // median, mean and p90 of each relative error (eps first: the fit's objective)
+  // median, mean and p90 of each relative error (eps first: the fit's objective reads it)
   for (const auto& [name, values] : {std::pair<const char*, const std::vector<double>*>{"eps", &j.eps},
                                      {"e_f", &j.e_f},
                                      {"spin_eps", &j.spin_eps}}) {
@@ -196,6 +197,7 @@ CampaignTable impact_study_table(const ImpactStudyHeader& header,
   // within this share of its value (impact_identification.hpp)
   d["identified_half_width"] = kIdentifiedHalfWidth;
   d["seed"] = header.seed;
+  if (header.kind == "impacts_fit") d["objective"] = fit_objective_words(header.objective);
   if (!header.parameters_from.empty()) d["parameters_from"] = header.parameters_from;
   if (header.kind == "impacts_score") d["in_sample"] = header.in_sample;
   d["command_line"] = header.command_line;
@@ -287,6 +289,14 @@ FrozenParameters frozen_parameters(const CampaignTable& fit, const std::string& 
   try {
     out.data_sha256 = d.at("data").at("sha256").get<std::string>();
     out.data_path = d.at("data").at("path").get<std::string>();
+    // fits before issue 34 minimised the median and do not say so
+    const std::string objective = d.value("objective", std::string(fit_objective_words(FitObjective::median)));
+    const std::optional<FitObjective> o = parse_fit_objective(objective);
+    if (!o) {
+      throw InputError(path, 0, "/campaign description objective",
+                       fmt::format("is '{}': no objective of `impacts fit`", objective));
+    }
+    out.objective = *o;
     for (const auto& m : d.at("models")) {
       for (const auto& f : m.at("fits")) {
         if (f.at("fold").get<int>() != kWholeFile) continue;

@@ -38,6 +38,16 @@ struct ImpactLaw {
 [[nodiscard]] Case impact_case(const ImpactObject& o, const ImpactState& at_touch,
                                const ImpactLaw& law, int outline_points = 180);
 
+// The same impact in a world whose length unit is 1/s m (s > 0): every
+// length and velocity times s, inertia times s^2, gravity times s; masses,
+// angles, rates and time unchanged, so the motion is the same one measured in
+// the new unit; a Kelvin-Voigt law keeps its K and c (force and length both
+// scale by s), K delta^n's K scales by s^(1 - n). For an engine tuned to a size range the object is not in
+// (Box2D: moving objects of 0.1 to 10 m, its manual's "Units"), as its users
+// scale their worlds.
+[[nodiscard]] Case scaled_impact_case(Case c, double s);
+[[nodiscard]] ImpactObject scaled_impact_object(ImpactObject o, double s);
+
 // m, the gap between the ellipse and the ground at t in [0, kLeadTime_s] of the
 // ballistic arc (positive: apart); impact_case refuses a state whose arc
 // touches before kLeadTime_s.

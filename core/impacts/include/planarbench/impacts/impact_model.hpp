@@ -17,6 +17,8 @@
 
 namespace pb {
 
+struct FitOptions;  // impact_fit.hpp
+
 // The impacts of a file, prepared once: states in the project's convention.
 struct ImpactTable {
   ImpactObject object;
@@ -69,11 +71,11 @@ class ImpactModel {
   [[nodiscard]] virtual int evaluations_hint() const { return 0; }
   // A model that learns from data (kind "learned"): the model trained on the
   // impacts `training` of `table` only (a fold's training set), whose
-  // predictions are then made; nullptr for every other model. `jobs`
-  // threads for its own fits.
+  // predictions are then made; nullptr for every other model. Its own fits
+  // minimise `options.objective` on `options.jobs` threads.
   [[nodiscard]] virtual std::unique_ptr<ImpactModel> trained(
       const ImpactTable& /*table*/, const std::vector<std::size_t>& /*training*/,
-      int /*jobs*/) const {
+      const FitOptions& /*options*/) const {
     return nullptr;
   }
 };
@@ -91,6 +93,9 @@ struct EngineModelSpec {
   EngineFactory factory;
   std::vector<std::pair<std::string, std::string>> settings;
   int outline_points = 180;
+  // the impact run in a world of length unit 1/length_scale m
+  // (scaled_impact_case), its velocities read back in m/s
+  double length_scale = 1.0;
   bool fit_stiffness = true;
   // Lankarani-Nikravesh (K in N/m^n, the exponent n, e, mu) instead of
   // Kelvin-Voigt (K, zeta, mu): an engine that takes the law as the case

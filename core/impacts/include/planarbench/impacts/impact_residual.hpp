@@ -14,7 +14,7 @@
 // contact point's slip u_t, cos 2 theta and sin 2 theta (the ellipse is the
 // same turned by pi), the contact point's offset r_x. Gaussian kernel
 // exp(-|a - b|^2 / (2 l^2)); l and the ridge lambda chosen among a fixed grid
-// by the median eps of the leave-one-out predictions over the training
+// by the fit's objective (impact_fit.hpp) of the leave-one-out predictions over the training
 // impacts, in closed form from K = Q L Q^T: the LOO residual of impact i is
 // r_i / (1 - H_ii), H = K (K + lambda I)^-1 (Hastie, Tibshirani & Friedman,
 // "The Elements of Statistical Learning", 2009, eq. 7.52, for linear

@@ -55,6 +55,7 @@ struct ImpactStudyHeader {
   ImpactObject object;
   int folds = 0;                // cross-validation folds (0: none)
   std::uint64_t seed = 0;       // of the fold split
+  FitObjective objective = FitObjective::median_plus_mean;  // fit: what it minimised
   nlohmann::ordered_json parameters_from = nlohmann::ordered_json::object();  // score: the fit file
   // score: the file scored is the one fitted to (its rows are "in_sample",
   // never shown as predictions; SPEC §8)
@@ -76,6 +77,7 @@ struct ImpactStudyHeader {
 struct FrozenParameters {
   std::string data_sha256;  // of the file fitted to
   std::string data_path;
+  FitObjective objective = FitObjective::median_plus_mean;  // a learned model is trained on it
   std::vector<std::pair<std::string, std::vector<double>>> models;
 };
 [[nodiscard]] FrozenParameters frozen_parameters(const CampaignTable& fit, const std::string& path);
