@@ -515,7 +515,7 @@ Action add_impacts_command(CLI::App& app, int argc, char** argv) {
       "parameters `impacts score` uses)");
   data_option(fit);
   fit->add_option("--engine", opt->engine,
-                  "reference, reference_exact, reference_ln, mujoco, box2d, ode, all, none, or a comma-separated "
+                  "reference, reference_exact, reference_ln, reference_hc, mujoco, box2d, ode, all, none, or a comma-separated "
                   "list (the baselines and the file's stored predictions are always included)")
       ->default_val("all");
   fit->add_option("--out", opt->out, "Fit file to write (HDF5, written atomically)");

@@ -14,7 +14,7 @@ namespace pb::cli {
 
 const std::vector<std::string>& impact_engine_names() {
   static const std::vector<std::string> names = {"reference", "reference_exact", "reference_ln",
-                                                 "mujoco",    "box2d",           "ode"};
+                                                 "reference_hc", "mujoco", "box2d", "ode"};
   return names;
 }
 
@@ -23,7 +23,7 @@ namespace {
 EngineModelSpec spec_of(const std::string& name) {
   EngineModelSpec s;
   s.name = name;
-  s.engine = name == "reference_exact" || name == "reference_ln" ? "reference" : name;
+  s.engine = name.rfind("reference", 0) == 0 ? "reference" : name;
   const std::string engine = s.engine;
   s.factory = [engine] { return make_engine(engine); };
   if (name == "reference") {
@@ -37,6 +37,12 @@ EngineModelSpec spec_of(const std::string& name) {
     s.representation =
         "the reference at exact geometry with the paper's Lankarani-Nikravesh law (eq. 7: a Hertz "
         "exponent and the law's restitution fitted, not Kelvin-Voigt's)";
+  } else if (name == "reference_hc") {
+    s.settings = {{"reference.geometry", "\"exact\""}};
+    s.hunt_crossley = true;
+    s.representation =
+        "the reference at exact geometry with Hunt and Crossley's own law K delta^n (1 + alpha "
+        "delta'): its restitution falls with the approach speed (alpha, n fitted)";
   } else if (name == "mujoco") {
     s.representation = "MuJoCo's ellipsoid geom against a plane (its soft contact, condim 3)";
   } else if (name == "box2d") {

@@ -20,7 +20,9 @@ nlohmann::json law_parameters(const ContactLaw& law) {
     return {{"stiffness", hz->stiffness}, {"exponent", hz->exponent}};
   }
   const auto& ln = std::get<LankaraniNikravesh>(law);
-  return {{"stiffness", ln.stiffness}, {"exponent", ln.exponent}, {"restitution", ln.restitution}};
+  nlohmann::json j = {{"stiffness", ln.stiffness}, {"exponent", ln.exponent}, {"restitution", ln.restitution}};
+  if (ln.damping_factor) j["damping_factor"] = *ln.damping_factor;  // issue 34's laws only
+  return j;
 }
 
 // the linear (k, c) whose clamped collision matches `target` for mass m

@@ -33,6 +33,7 @@ nlohmann::json law_json(const ContactLaw& law) {
     j["stiffness"] = ln.stiffness;
     j["exponent"] = ln.exponent;
     j["restitution"] = ln.restitution;
+    if (ln.damping_factor) j["damping_factor"] = *ln.damping_factor;  // issue 34's laws only
   }
   return j;
 }

@@ -38,6 +38,8 @@ NormalLaw::NormalLaw(const ContactLaw& law) {
     k_ = ln.material ? stiffness_from_materials(*ln.material) : ln.stiffness;
     n_ = ln.exponent;
     e_ = ln.restitution;
+    // the factor the law states, if any (else eq. 6's, below)
+    if (ln.damping_factor) chi_ = *ln.damping_factor;
   }
 }
 
@@ -61,8 +63,9 @@ double NormalLaw::unclamped_force_n(double delta_m, double delta_dot_mps,
     case Kind::hertz:
       return k_ * power(delta_m);
     case Kind::hysteresis: {
-      const double mu =
-          approach_mps > 0.0 ? 3.0 * k_ * (1.0 - e_ * e_) / (4.0 * approach_mps) : 0.0;  // eq. 6
+      const double mu = !(approach_mps > 0.0) ? 0.0
+                        : chi_ ? k_ * *chi_ / approach_mps
+                               : 3.0 * k_ * (1.0 - e_ * e_) / (4.0 * approach_mps);  // eq. 6
       const double d = mu * power(delta_m);                                              // eq. 5
       return k_ * power(delta_m) + d * delta_dot_mps;
     }
@@ -77,8 +80,9 @@ double NormalLaw::pushes(double delta_m, double delta_dot_mps, double approach_m
     case Kind::hertz:
       return 1.0;
     case Kind::hysteresis:
-      return approach_mps > 0.0 ? 1.0 + 3.0 * (1.0 - e_ * e_) / (4.0 * approach_mps) * delta_dot_mps
-                                : 1.0;
+      if (!(approach_mps > 0.0)) return 1.0;
+      return chi_ ? 1.0 + *chi_ / approach_mps * delta_dot_mps
+                  : 1.0 + 3.0 * (1.0 - e_ * e_) / (4.0 * approach_mps) * delta_dot_mps;
   }
   return 1.0;
 }
@@ -93,8 +97,8 @@ std::string NormalLaw::describe() const {
     case Kind::hysteresis:
       return fmt::format(
           "Hertz with hysteresis damping (eqs. 2, 5, 6), K = {:.6g} N/m^{:g}, "
-          "e = {:g}",
-          k_, n_, e_);
+          "e = {:g}{}",
+          k_, n_, e_, chi_ ? fmt::format(", damping factor {:g}", *chi_) : std::string());
   }
   return {};
 }

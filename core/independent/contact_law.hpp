@@ -52,6 +52,7 @@ class NormalLaw {
   double depth_m_ = 0.0;  // m, Kelvin-Voigt's damping depth (0: none)
   double n_ = 1.0;        // exponent
   double e_ = 1.0;        // restitution of the hysteresis law
+  std::optional<double> chi_;  // its damping factor when stated (else eq. 6's 3 (1 - e^2) / 4)
 };
 
 }  // namespace pb::independent

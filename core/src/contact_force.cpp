@@ -33,11 +33,16 @@ double lankarani_nikravesh_force(const LankaraniNikravesh& law, double delta, do
                                  double approach_speed) {
   const double elastic = law.stiffness * std::pow(delta, law.exponent);
   if (!(approach_speed > 0.0)) return elastic;
-  const double e = law.restitution;
-  return elastic * (1.0 + 0.75 * (1.0 - e * e) * delta_dot / approach_speed);
+  return elastic * (1.0 + damping_factor(law) * delta_dot / approach_speed);
 }
 
 }  // namespace
+
+double damping_factor(const LankaraniNikravesh& law) {
+  if (law.damping_factor) return *law.damping_factor;
+  const double e = law.restitution;
+  return 0.75 * (1.0 - e * e);
+}
 
 double contact_force_n(const ContactLaw& law, double delta_m, double delta_dot_mps,
                        double approach_speed_mps) {
@@ -69,9 +74,13 @@ LinearizedLaw linearize_law(const ContactLaw& law, double delta_m, double approa
     const auto& ln = std::get<LankaraniNikravesh>(law);
     out.stiffness_n_per_m = ln.stiffness * std::pow(delta_m, ln.exponent - 1.0);
     if (approach_speed_mps > 0.0) {
+      // eq. 7's factor in its own order of operations (the pinned results'
+      // bits), a stated one as it is
       const double e = ln.restitution;
-      out.damping_ns_per_m = out.stiffness_n_per_m * delta_m * 0.75 * (1.0 - e * e) /
-                             approach_speed_mps;
+      out.damping_ns_per_m =
+          ln.damping_factor
+              ? out.stiffness_n_per_m * delta_m * *ln.damping_factor / approach_speed_mps
+              : out.stiffness_n_per_m * delta_m * 0.75 * (1.0 - e * e) / approach_speed_mps;
     }
   }
   return out;

@@ -55,6 +55,7 @@ std::size_t metric_index(const CampaignTable& t, const std::string& name) {
 std::string colour_of(const std::string& model, std::size_t index) {
   if (model == "reference_exact") return "#17becf";
   if (model == "reference_ln") return "#aec7e8";
+  if (model == "reference_hc") return "#9edae5";
   if (model == "rigid") return "#000000";
   if (model == "naive_bounce") return "#7f7f7f";
   if (model == "rigid_compliant") return "#8c564b";

@@ -42,7 +42,7 @@ TEST(ClosedFormMatch, ReasonsForNone) {
   EXPECT_TRUE(mentions(reason(c), "damping ramp"));
 
   c = testing::falling_ball();
-  c.contacts[0].law = LankaraniNikravesh{1e9, 1.5, 0.7, std::nullopt};
+  c.contacts[0].law = LankaraniNikravesh{1e9, 1.5, 0.7, std::nullopt, {}};
   EXPECT_TRUE(mentions(reason(c), "lankarani_nikravesh"));
 
   c = testing::falling_ball();

@@ -96,7 +96,7 @@ inline Case dual_pendulum() {
   p.name = "ellipse_disk";
   p.body_a = 0;
   p.body_b = 1;
-  p.law = LankaraniNikravesh{1.0242e10, 1.5, 0.7, std::nullopt};
+  p.law = LankaraniNikravesh{1.0242e10, 1.5, 0.7, std::nullopt, {}};
   c.contacts = {p};
   return c;
 }

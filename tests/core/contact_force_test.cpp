@@ -36,14 +36,14 @@ TEST(ContactForce, DampingRampIsTheCubicStep) {
 // speeds above delta_dot_minus / (0.75 (1 - e^2)), where it is clamped.
 TEST(ContactForce, LankaraniNikraveshHysteresis) {
   const double k = 1.0242e10;
-  const ContactLaw law = LankaraniNikravesh{k, 1.5, 0.7, std::nullopt};
+  const ContactLaw law = LankaraniNikravesh{k, 1.5, 0.7, std::nullopt, {}};
   const double d = 1e-4;
   const double elastic = k * std::pow(d, 1.5);
   // 1 + 0.75 * 0.51 = 1.3825; relative 1e-15: a few roundings of pow and products
   EXPECT_NEAR(contact_force_n(law, d, 1.78, 1.78), elastic * 1.3825, 1e-15 * elastic * 2);
   // same roundings, a smaller bracket (0.6175): 1e-15 relative to the elastic force
   EXPECT_NEAR(contact_force_n(law, d, -1.78, 1.78), elastic * (1.0 - 0.3825), 1e-15 * elastic);
-  const ContactLaw soft = LankaraniNikravesh{k, 1.5, 0.1, std::nullopt};
+  const ContactLaw soft = LankaraniNikravesh{k, 1.5, 0.1, std::nullopt, {}};
   // 1 + 0.75 (1 - 0.01) (-2) < 0: a rebound faster than the approach would pull
   EXPECT_EQ(contact_force_n(soft, d, -2.0 * 1.78, 1.78), 0.0);
   // no approach speed (contact starting at rest): elastic only
@@ -68,7 +68,7 @@ TEST(ContactForce, HertzStiffnessOfThePendulumSteel) {
 TEST(LinearizeLaw, ReproducesTheLawAtThisPenetration) {
   const ContactLaw laws[] = {KelvinVoigt{1e4, 10.0, 0.0}, KelvinVoigt{1e4, 10.0, 0.1},
                              Hertz{2e6, 1.5, std::nullopt},
-                             LankaraniNikravesh{1.0242e10, 1.5, 0.7, std::nullopt}};
+                             LankaraniNikravesh{1.0242e10, 1.5, 0.7, std::nullopt, {}}};
   const double approach = 1.78;  // m/s
   for (const ContactLaw& law : laws) {
     for (const double delta : {1e-6, 1e-4, 0.03, 0.2}) {
@@ -91,9 +91,30 @@ TEST(LinearizeLaw, ReproducesTheLawAtThisPenetration) {
   EXPECT_EQ(none.damping_ns_per_m, 0.0);
   // Lankarani-Nikravesh without a latched approach speed has no damping term
   const LinearizedLaw elastic =
-      linearize_law(LankaraniNikravesh{2e6, 1.5, 0.8, std::nullopt}, 1e-3, 0.0);
+      linearize_law(LankaraniNikravesh{2e6, 1.5, 0.8, std::nullopt, {}}, 1e-3, 0.0);
   EXPECT_EQ(elastic.damping_ns_per_m, 0.0);
   EXPECT_DOUBLE_EQ(elastic.stiffness_n_per_m * 1e-3, 2e6 * std::pow(1e-3, 1.5));
+}
+
+// A stated damping factor chi replaces eq. 7's 3 (1 - e^2) / 4 (issue 34's
+// Hunt-Crossley): K delta^n (1 + chi delta_dot / delta_dot_minus) and the
+// linearised damping K delta^n chi / delta_dot_minus, by hand; e is then
+// unused. Stating eq. 7's own factor gives eq. 7's law.
+TEST(ContactForce, AStatedDampingFactorReplacesEquationSevens) {
+  const double k = 2e7;
+  const double d = 2e-3;
+  const double elastic = k * std::pow(d, 1.5);
+  const LankaraniNikravesh hc{k, 1.5, 0.3, std::nullopt, 1.2};
+  EXPECT_EQ(damping_factor(hc), 1.2);
+  // 1 + 1.2 * 0.5 / 2.5 = 1.24; 1e-15 relative: a few roundings
+  EXPECT_NEAR(contact_force_n(hc, d, 0.5, 2.5), elastic * 1.24, 1e-15 * elastic * 2);
+  const LinearizedLaw lin = linearize_law(hc, d, 2.5);
+  EXPECT_NEAR(lin.damping_ns_per_m, elastic * 1.2 / 2.5, 1e-15 * elastic);
+  const LankaraniNikravesh eq7{k, 1.5, 0.7, std::nullopt, {}};
+  EXPECT_DOUBLE_EQ(damping_factor(eq7), 0.75 * (1.0 - 0.49));
+  LankaraniNikravesh stated = eq7;
+  stated.damping_factor = damping_factor(eq7);
+  EXPECT_EQ(contact_force_n(stated, d, 0.5, 2.5), contact_force_n(eq7, d, 0.5, 2.5));
 }
 
 }  // namespace

@@ -59,7 +59,7 @@ TEST(ContactLawResponse, HertzImpactMatchesJohnson) {
 // Lankarani-Nikravesh at e = 0.7 dissipates; the model is derived for e near 1,
 // so the effective restitution differs from the nominal one (it is higher).
 TEST(ContactLawResponse, LankaraniNikraveshIsDissipative) {
-  const auto r = simulate_collision(LankaraniNikravesh{1.0242e10, 1.5, 0.7, std::nullopt}, 0.5, 1.78);
+  const auto r = simulate_collision(LankaraniNikravesh{1.0242e10, 1.5, 0.7, std::nullopt, {}}, 0.5, 1.78);
   EXPECT_LT(r.restitution, 1.0);
   EXPECT_GT(r.restitution, 0.7);
 }

@@ -56,7 +56,7 @@ TEST(ElasticEnergy, ClosedFormsOfTheThreeLaws) {
   // pow and a division
   EXPECT_NEAR(elastic_energy_j(Hertz{1e10, 1.5, {}}, 1e-4), 0.4, 0.4 * 1e-14);
   // Lankarani-Nikravesh stores the same as its Hertz part: 2e6 * 0.1^3 / 3 J (n = 2)
-  EXPECT_NEAR(elastic_energy_j(LankaraniNikravesh{2e6, 2.0, 0.7, {}}, 0.1), 2e6 * 1e-3 / 3.0, 1e-9);
+  EXPECT_NEAR(elastic_energy_j(LankaraniNikravesh{2e6, 2.0, 0.7, {}, {}}, 0.1), 2e6 * 1e-3 / 3.0, 1e-9);
   // no penetration, no energy
   EXPECT_EQ(elastic_energy_j(KelvinVoigt{1e4, 10.0, 0.0}, -0.01), 0.0);
 }

@@ -25,7 +25,7 @@ TEST(ContactLaw, KelvinVoigt) {
 // eq. 7 written out: F = K delta^1.5 (1 + 3 (1 - e^2) / 4 * delta_dot / v0);
 // 1e-12 relative: a pow and a few products
 TEST(ContactLaw, HysteresisDampingIsEquationSeven) {
-  const NormalLaw law(LankaraniNikravesh{2e6, 1.5, 0.8, std::nullopt});
+  const NormalLaw law(LankaraniNikravesh{2e6, 1.5, 0.8, std::nullopt, {}});
   const double delta = 1e-3;
   const double v0 = 1.2;
   for (const double rate : {1.2, 0.3, -0.5, -1.0}) {
@@ -45,7 +45,7 @@ TEST(ContactLaw, HysteresisDampingIsEquationSeven) {
 // sqrt(0.0085 / 2) = 1.0242e10: the printed five digits, 5e-5 relative
 TEST(ContactLaw, StiffnessFromMaterials) {
   HertzMaterial m{210e9, 210e9, 0.33, 0.33, 0.0085, 0.0085};
-  const NormalLaw law(LankaraniNikravesh{0.0, 1.5, 0.7, m});
+  const NormalLaw law(LankaraniNikravesh{0.0, 1.5, 0.7, m, {}});
   EXPECT_NEAR(law.stiffness(), 1.0242e10, 5e-5 * 1.0242e10);
   const double h = (1.0 - 0.33 * 0.33) / (std::numbers::pi * 210e9);
   EXPECT_NEAR(law.stiffness(), 4.0 / (3.0 * std::numbers::pi * 2.0 * h) * std::sqrt(0.0085 / 2.0),

@@ -38,7 +38,7 @@ TEST(UnclampedForce, KelvinVoigtWithRamp) {
 TEST(UnclampedForce, LankaraniNikravesh) {
   // F = K delta^1.5 (1 + 3 (1 - e^2)/4 delta_dot / v0), here with v0 = 1.78 m/s
   const double k = 1.0242e10, e = 0.7, v0 = 1.78, d = 1e-4;
-  const ContactLaw ln = LankaraniNikravesh{k, 1.5, e, std::nullopt};
+  const ContactLaw ln = LankaraniNikravesh{k, 1.5, e, std::nullopt, {}};
   for (const double rate : {1.5, 0.0, -1.2, -5.0}) {
     const double expect = k * std::pow(d, 1.5) * (1.0 + 0.75 * (1.0 - e * e) * rate / v0);
     // relative 1e-12: pow and a handful of products, each 1.1e-16

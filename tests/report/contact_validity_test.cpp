@@ -194,7 +194,7 @@ TEST(ContactValidity, LankaraniNikraveshReadsItsApproachSpeedFromTheRunsEpisode)
   // F = K delta^1.5 (1 + 0.75 (1 - e^2) rate / approach): K = 1e6, delta =
   // 1e-3: 31.6228 N elastic; e = 0.5, rate 0.5 m/s of an approach at 1 m/s:
   // x (1 + 0.75 * 0.75 * 0.5)
-  const Case c = disk_on_ground(LankaraniNikravesh{1e6, 1.5, 0.5, std::nullopt});
+  const Case c = disk_on_ground(LankaraniNikravesh{1e6, 1.5, 0.5, std::nullopt, {}});
   const double law = 1e6 * std::pow(1e-3, 1.5) * (1.0 + 0.75 * 0.75 * 0.5);
   RunResult r = disk_run({-0.5, -0.5}, {law, law});
   ContactEpisode e;

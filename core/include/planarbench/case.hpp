@@ -98,11 +98,19 @@ struct Hertz {
 // Lankarani-Nikravesh, paper eq. 7:
 // F = K delta^n [1 + 3(1 - e^2)/4 * delta_dot / delta_dot_minus], clamped at 0,
 // delta_dot_minus = approach speed at the onset of this contact.
+// `damping_factor` chi, when set, replaces 3(1 - e^2)/4: the laws of this
+// family differ only in chi (Flores et al., "On the continuous contact force
+// models for soft materials in multibody dynamics", Multibody Syst. Dyn. 25,
+// 2011: Hunt-Crossley 3(1 - e)/2, Lankarani-Nikravesh 3(1 - e^2)/4, Flores
+// 8(1 - e)/(5e)), and chi = alpha delta_dot_minus is Hunt and Crossley's own
+// F = K delta^n (1 + alpha delta_dot) for a contact of that approach speed.
+// Not read from case files (the measured impacts set it, issue 34).
 struct LankaraniNikravesh {
   double stiffness = 0.0;    // N/m^n
   double exponent = 1.5;     // n
   double restitution = 0.0;  // e, nominal coefficient of restitution
   std::optional<HertzMaterial> material;  // set when K came from eq. 3
+  std::optional<double> damping_factor;   // chi, >= 0; unset: 3(1 - e^2)/4
 };
 
 using ContactLaw = std::variant<KelvinVoigt, Hertz, LankaraniNikravesh>;

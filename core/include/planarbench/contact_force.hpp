@@ -34,6 +34,10 @@ struct LinearizedLaw {
 [[nodiscard]] LinearizedLaw linearize_law(const ContactLaw& law, double delta_m,
                                           double approach_speed_mps);
 
+// chi of F = K delta^n [1 + chi delta_dot / delta_dot_minus]: the law's
+// damping_factor when set, else eq. 7's 3 (1 - e^2) / 4
+[[nodiscard]] double damping_factor(const LankaraniNikravesh& law);
+
 // The cubic step of MSC ADAMS IMPACT: 0 at x <= 0, 1 at x >= 1,
 // 3x^2 - 2x^3 between (smooth in value and slope).
 [[nodiscard]] double cubic_step(double x);

@@ -82,7 +82,7 @@ TEST(ContactMapping, LankaraniNikraveshMatchesOneImpactsRestitutionAndDuration) 
   const double K = 1.0242e10;
   const double m = 0.633;
   const double v = 1.78;
-  const LawMapping map = map_contact_law(LankaraniNikravesh{K, 1.5, 0.7, {}}, {m, v, "test"});
+  const LawMapping map = map_contact_law(LankaraniNikravesh{K, 1.5, 0.7, {}, {}}, {m, v, "test"});
   EXPECT_FALSE(map.exact);
   const Clamped law = ln_collision(K, 0.7, m, v);
   const Clamped lin = linear_closed_form(map.stiffness_n_per_m, map.damping_ns_per_m, m);
@@ -115,7 +115,7 @@ TEST(ContactMapping, HertzIsAnUndampedSpringOfTheSameDuration) {
 
 TEST(ContactMapping, RestingPairFallsBackToAStatedApproachSpeed) {
   const LawMapping map =
-      map_contact_law(LankaraniNikravesh{1e10, 1.5, 0.7, {}}, {1.0, 0.0, "test"});
+      map_contact_law(LankaraniNikravesh{1e10, 1.5, 0.7, {}, {}}, {1.0, 0.0, "test"});
   EXPECT_EQ(map.json.at("approach_speed_mps"), kFallbackApproachSpeedMps);
   EXPECT_EQ(map.json.at("not_expressed").size(), 3u);
 }

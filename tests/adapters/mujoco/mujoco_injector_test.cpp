@@ -96,7 +96,7 @@ TEST_F(Injection, InactiveOutsideItsScope) {
 TEST_F(Injection, LatchesTheApproachSpeedAtFirstPenetration) {
   // Lankarani-Nikravesh uses the rate at onset: an observation approaching at
   // 2 m/s latches, a later one at 1 m/s uses the latched 2 m/s
-  c_.contacts[0].law = LankaraniNikravesh{1e9, 1.5, 0.5, {}};
+  c_.contacts[0].law = LankaraniNikravesh{1e9, 1.5, 0.5, {}, {}};
   PairObservation o;
   o.reported = true;
   o.penetration_m = 1e-4;

@@ -111,7 +111,7 @@ inline Case dual_pendulum(double duration_s = 2.0) {
   cp.name = "contact";
   cp.body_a = 0;
   cp.body_b = 1;
-  cp.law = LankaraniNikravesh{hertz_stiffness(mat), 1.5, 0.7, mat};
+  cp.law = LankaraniNikravesh{hertz_stiffness(mat), 1.5, 0.7, mat, {}};
   cs.contacts.push_back(cp);
   return cs;
 }

@@ -223,7 +223,7 @@ TEST(OdeContactMapping, PlainKelvinVoigtIsExact) {
 // (kelvin_voigt_response, a closed form); 1e-6 relative: the bisection for
 // zeta and the RK4 collision are far tighter.
 TEST(OdeContactMapping, LankaraniNikraveshEquivalentMatchesDurationAndRestitution) {
-  const LankaraniNikravesh ln{1.0242e10, 1.5, 0.7, std::nullopt};
+  const LankaraniNikravesh ln{1.0242e10, 1.5, 0.7, std::nullopt, {}};
   const LinearLaw l = linear_law(ln, 0.633, 1.78);
   EXPECT_FALSE(l.exact);
   EXPECT_NEAR(l.linear_response.restitution, l.law_response.restitution, 1e-6);

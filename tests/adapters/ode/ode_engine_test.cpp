@@ -452,7 +452,7 @@ TEST(OdeEngine, Supports) {
   Case kv = ode_test::kelvin_voigt_drop();
   EXPECT_EQ(e->supports(kv).support, Support::native);
   Case ln = kv;
-  ln.contacts[0].law = LankaraniNikravesh{1e10, 1.5, 0.7, std::nullopt};
+  ln.contacts[0].law = LankaraniNikravesh{1e10, 1.5, 0.7, std::nullopt, {}};
   EXPECT_EQ(e->supports(ln).support, Support::mapped);
   EXPECT_NE(e->supports(ln).reason.find("lankarani_nikravesh"), std::string::npos);
   EXPECT_NE(e->supports(ln).reason.find("each step"), std::string::npos);

@@ -104,7 +104,7 @@ TEST(OdePairContact, SphereConvexDepthMatchesThePolygon) {
       Case c;
       c.bodies = {ellipse_body("ellipse", a, b, 1.0, Vec2::Zero(), -kPi / 2.0),
                   disk_body("disk", 0.5, 1.0, centre)};
-      c.contacts = {pair(0, 1, LankaraniNikravesh{1.0242e10, 1.5, 0.7, std::nullopt})};
+      c.contacts = {pair(0, 1, LankaraniNikravesh{1.0242e10, 1.5, 0.7, std::nullopt, {}})};
       OdeWorld world(c);
       PairCollider collider(c, world);
       std::vector<PairContact> out;

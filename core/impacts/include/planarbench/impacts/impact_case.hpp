@@ -31,6 +31,12 @@ struct ImpactLaw {
   bool lankarani_nikravesh = false;
   double exponent = 1.5;           // n
   double restitution = 0.6;        // e
+  // Hunt and Crossley's own damping instead (issue 34): F = K delta^n (1 +
+  // alpha delta_dot), alpha free, the restitution falling with the approach
+  // speed; the case states it as eq. 7's family with chi = alpha times the
+  // impact's approach speed (case.hpp), the exponent n as above
+  bool hunt_crossley = false;
+  double damping_s_per_m = 0.0;    // alpha
 };
 
 // The case of one impact; `outline_points` of the ellipse (the reference and

@@ -101,6 +101,8 @@ struct EngineModelSpec {
   // Kelvin-Voigt (K, zeta, mu): an engine that takes the law as the case
   // states it (the reference)
   bool lankarani_nikravesh = false;
+  // Hunt-Crossley (K in N/m^n, n, alpha in s/m, mu): the reference
+  bool hunt_crossley = false;
   std::string representation;  // one line: how the engine represents the ellipse
 };
 [[nodiscard]] std::unique_ptr<ImpactModel> engine_impact_model(EngineModelSpec spec);
