@@ -13,7 +13,7 @@
 #   results/report/report.md    the same in Markdown, with SVG figures
 # and prints the gate's verdict against cases/thresholds.toml.
 # Set PB_SKIP_SWEEP=1 to leave the sweep out (about 16 s on 2 cores), PB_SKIP_IMPACTS=1
-# to leave the measured impacts out (about 6 min on 2 cores).
+# to leave the measured impacts out (about 7 min on 2 cores).
 # Builds the command line only, not the tests (scripts/test.sh builds those).
 set -euo pipefail
 cd "$(dirname "$0")/.."
