@@ -269,9 +269,9 @@ std::vector<FoldFit> run_tasks(const ImpactsOptions& opt, const LoadedData& d,
     }
     FoldFit f = run_fold_fit(m, d.table, folds, t.fold, fo);
     if (!opt.quiet) {
-      std::fprintf(stderr, "%s[%zu/%zu] %s: %s, objective (median + mean eps) %.4f after %d evaluations (%.1f s)\n",
-                   fo.progress ? "\r" : "", k,
-                   tasks.size(), t.label().c_str(), parameters_text(m, f.fit.parameters).c_str(),
+      std::fprintf(stderr, "%s[%zu/%zu] %s: %s, objective (%s eps) %.4f after %d evaluations (%.1f s)\n",
+                   fo.progress ? "\r" : "", k, tasks.size(), t.label().c_str(),
+                   parameters_text(m, f.fit.parameters).c_str(), fit_objective_name(fo.objective),
                    f.fit.objective, f.fit.evaluations, f.wall_time_s);
     }
     if (!work.empty()) write_task(work, t, f);
@@ -524,7 +524,7 @@ Action add_impacts_command(CLI::App& app, int argc, char** argv) {
       fit->add_option("--seed", opt->seed, "Seed of the fold split, in [0, 2^64 - 1]")->default_val(23));
   fit->add_option("--max-evaluations", opt->max_evaluations,
                   "Objective evaluations per fit (each runs every impact fitted to); a closed-form "
-                  "law takes at least its own number (rigid_compliant: 600, microseconds each)")
+                  "law takes at least its own number (rigid_compliant: 2000, about 0.5 ms each)")
       ->default_val(40);
   fit->add_option("--objective", opt->objective,
                   "What each fit minimises over the eps of its impacts: median+mean (the median "

@@ -26,20 +26,21 @@ EngineModelSpec spec_of(const std::string& name) {
   s.engine = name.rfind("reference", 0) == 0 ? "reference" : name;
   const std::string engine = s.engine;
   s.factory = [engine] { return make_engine(engine); };
+  // every reference_* model runs the reference at exact geometry
+  if (s.engine == "reference" && name != "reference") {
+    s.settings = {{"reference.geometry", "\"exact\""}};
+  }
   if (name == "reference") {
     s.representation = "the paper's outline contact: 180 outline points of the ellipse";
   } else if (name == "reference_exact") {
-    s.settings = {{"reference.geometry", "\"exact\""}};
     s.representation = "the reference at exact geometry: the true ellipse against the line";
   } else if (name == "reference_ln") {
-    s.settings = {{"reference.geometry", "\"exact\""}};
-    s.lankarani_nikravesh = true;
+    s.law = ImpactLawKind::lankarani_nikravesh;
     s.representation =
         "the reference at exact geometry with the paper's Lankarani-Nikravesh law (eq. 7: a Hertz "
         "exponent and the law's restitution fitted, not Kelvin-Voigt's)";
   } else if (name == "reference_hc") {
-    s.settings = {{"reference.geometry", "\"exact\""}};
-    s.hunt_crossley = true;
+    s.law = ImpactLawKind::hunt_crossley;
     s.representation =
         "the reference at exact geometry with Hunt and Crossley's own law K delta^n (1 + alpha "
         "delta'): its restitution falls with the approach speed (alpha, n fitted)";

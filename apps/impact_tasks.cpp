@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "planarbench/errors.hpp"
-#include "planarbench/impacts/impact_fit.hpp"
+#include "planarbench/impacts/fit_objective.hpp"
 
 namespace pb::cli {
 
@@ -110,14 +110,11 @@ StudyPins read_study_pins(const fs::path& work) {
     pins.folds = static_cast<int>(folds);
     pins.seed = study.at("seed").get<std::uint64_t>();
     pins.models = study.at("models").get<std::vector<std::string>>();
-    // tasks fitted to another objective (a folder written before issue 34's
-    // median + mean) do not make this build's study
-    // a folder written before issue 34 minimised the median and says nothing
-    const std::string objective = study.value("objective", std::string(fit_objective_words(FitObjective::median)));
-    const std::optional<FitObjective> o = parse_fit_objective(objective);
+    const std::optional<FitObjective> o = stated_fit_objective(study);
     if (!o) {
       throw InputError(file, 0, "objective",
-                       fmt::format("is '{}': must be '{}' or '{}'", objective,
+                       fmt::format("is '{}': must be '{}' or '{}'",
+                                   study.at("objective").get<std::string>(),
                                    fit_objective_words(FitObjective::median_plus_mean),
                                    fit_objective_words(FitObjective::median)));
     }

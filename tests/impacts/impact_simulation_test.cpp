@@ -82,7 +82,7 @@ TEST(ImpactCase, TheLawIsLankaraniNikraveshWhenAsked) {
   const pb::ImpactState at_touch = pb::test::impact_state(0.8, 0.6, -2.4, 12.0);
   pb::ImpactLaw law;
   law.stiffness_n_per_m = 2e6;
-  law.lankarani_nikravesh = true;
+  law.kind = pb::ImpactLawKind::lankarani_nikravesh;
   law.exponent = 1.3;
   law.restitution = 0.55;
   law.friction = 0.19;
@@ -218,7 +218,7 @@ TEST(ImpactCase, AScaledWorldIsTheSameImpactInAnotherUnit) {
   EXPECT_EQ(std::get<pb::Ellipse>(b.shape).semi_axis_a_m, kObject.semi_axis_a_m * s);
   EXPECT_EQ(std::get<pb::KelvinVoigt>(big.contacts[0].law).stiffness_n_per_m, law.stiffness_n_per_m);
   pb::ImpactLaw ln = law;
-  ln.lankarani_nikravesh = true;
+  ln.kind = pb::ImpactLawKind::lankarani_nikravesh;
   ln.exponent = 1.5;
   const pb::Case big_ln = pb::scaled_impact_case(pb::impact_case(kObject, at_touch, ln), s);
   EXPECT_DOUBLE_EQ(std::get<pb::LankaraniNikravesh>(big_ln.contacts[0].law).stiffness,
@@ -248,7 +248,7 @@ TEST(ImpactSimulation, AHuntCrossleyDropMatchesItsOwnLaw) {
   pb::ImpactObject disk;
   disk.semi_axis_a_m = disk.semi_axis_b_m = 0.03;
   pb::ImpactLaw law;
-  law.hunt_crossley = true;
+  law.kind = pb::ImpactLawKind::hunt_crossley;
   law.stiffness_n_per_m = 2e7;  // N/m^1.5: ~2 mm deep at 2.5 m/s
   law.exponent = 1.5;
   law.damping_s_per_m = 0.25;

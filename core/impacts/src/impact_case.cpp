@@ -90,7 +90,7 @@ Case impact_case(const ImpactObject& o, const ImpactState& at_touch, const Impac
   pair.name = "ground_ellipse";
   pair.body_a = 0;
   pair.body_b = 1;
-  if (law.hunt_crossley) {
+  if (law.kind == ImpactLawKind::hunt_crossley) {
     // the contact point's approach speed at the touch: the speed eq. 7's
     // family latches at the onset, which the arc reaches there
     const Vec2 r = lowest_point_offset(o, at_touch.angle_rad);
@@ -98,7 +98,7 @@ Case impact_case(const ImpactObject& o, const ImpactState& at_touch, const Impac
         -(at_touch.velocity_mps.y() + at_touch.angular_velocity_radps * r.x());
     pair.law = LankaraniNikravesh{law.stiffness_n_per_m, law.exponent, 0.0, {},
                                   law.damping_s_per_m * approach};
-  } else if (law.lankarani_nikravesh) {
+  } else if (law.kind == ImpactLawKind::lankarani_nikravesh) {
     pair.law = LankaraniNikravesh{law.stiffness_n_per_m, law.exponent, law.restitution, {}, {}};
   } else {
     pair.law = KelvinVoigt{law.stiffness_n_per_m,

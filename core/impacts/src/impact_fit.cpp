@@ -165,6 +165,8 @@ FitResult fit_impacts(const ImpactModel& model, const ImpactTable& table,
       if (failed) std::rethrow_exception(failed);
       throw;
     }
+    // a fresh simplex spends n + 1 evaluations being built: with fewer than
+    // 4 n left (a heuristic: a few of its moves past that) no restart
     const int left = budget - result.evaluations;
     if (r != nlopt::XTOL_REACHED || left < static_cast<int>(4 * free.size()) ||
         !(best < previous - 1e-6)) {

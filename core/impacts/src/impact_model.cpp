@@ -41,13 +41,17 @@ class EnginePredictor final : public ImpactPredictor {
   }
   ImpactOutcome predict(const ImpactTable& table, std::size_t i,
                         const std::vector<double>& p) override {
-    ImpactLaw law{p[0], p[1], p[2]};
-    if (spec_.lankarani_nikravesh) {
-      // (K, n, e, mu)
-      law = ImpactLaw{p[0], 0.0, p[3], true, p[1], p[2]};
-    } else if (spec_.hunt_crossley) {
-      // (K, n, alpha, mu)
-      law = ImpactLaw{p[0], 0.0, p[3], false, p[1], 0.0, true, p[2]};
+    // the parameters in parameters()'s order
+    ImpactLaw law;
+    law.kind = spec_.law;
+    law.stiffness_n_per_m = p[0];
+    if (spec_.law == ImpactLawKind::kelvin_voigt) {  // (K, zeta, mu)
+      law.damping_ratio = p[1];
+      law.friction = p[2];
+    } else {  // (K, n, e or alpha, mu)
+      law.exponent = p[1];
+      (spec_.law == ImpactLawKind::lankarani_nikravesh ? law.restitution : law.damping_s_per_m) = p[2];
+      law.friction = p[3];
     }
     const Case c = impact_case(table.object, table.before[i], law, spec_.outline_points);
     const double s = spec_.length_scale;
@@ -72,7 +76,7 @@ class EngineModel final : public ImpactModel {
   std::string description() const override { return spec_.representation; }
   std::string version() const override { return spec_.factory()->version(); }
   std::vector<ImpactParameter> parameters() const override {
-    if (spec_.lankarani_nikravesh) {
+    if (spec_.law == ImpactLawKind::lankarani_nikravesh) {
       // K's range: the Kelvin-Voigt fits' 1e4 .. 1e5 N/m at the ~2 mm peak
       // depth of these drops, as K delta^n for n in [1, 2]: 1e4 .. 3e7
       // N/m^n, widened a decade each way
@@ -82,7 +86,7 @@ class EngineModel final : public ImpactModel {
               {"restitution", "-", 0.0, 1.0, 0.6, false, "e of the law's damping (eq. 7)"},
               {"friction", "-", 0.0, 1.0, 0.2, false, "the pair's Coulomb coefficient mu"}};
     }
-    if (spec_.hunt_crossley) {
+    if (spec_.law == ImpactLawKind::hunt_crossley) {
       // alpha: a disk dropped at 2.5 m/s keeps e 0.71 at alpha 0.25 s/m
       // (ImpactSimulation.AHuntCrossleyDropMatchesItsOwnLaw's truth); the
       // data's e ~ 0.59 wants more; 0 .. 2 s/m spans e from 1 to a rest

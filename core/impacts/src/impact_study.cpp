@@ -289,12 +289,11 @@ FrozenParameters frozen_parameters(const CampaignTable& fit, const std::string& 
   try {
     out.data_sha256 = d.at("data").at("sha256").get<std::string>();
     out.data_path = d.at("data").at("path").get<std::string>();
-    // fits before issue 34 minimised the median and do not say so
-    const std::string objective = d.value("objective", std::string(fit_objective_words(FitObjective::median)));
-    const std::optional<FitObjective> o = parse_fit_objective(objective);
+    const std::optional<FitObjective> o = stated_fit_objective(d);
     if (!o) {
       throw InputError(path, 0, "/campaign description objective",
-                       fmt::format("is '{}': no objective of `impacts fit`", objective));
+                       fmt::format("is '{}': no objective of `impacts fit`",
+                                   d.at("objective").get<std::string>()));
     }
     out.objective = *o;
     for (const auto& m : d.at("models")) {

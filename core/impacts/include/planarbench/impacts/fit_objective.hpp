@@ -28,4 +28,14 @@ enum class FitObjective { median_plus_mean, median };
 // the command line's names: "median+mean", "median"
 [[nodiscard]] const char* fit_objective_name(FitObjective objective);
 
+// The objective a fit file's description or a --work folder's study.json (a
+// JSON object) states: one written before issue 34 states none and minimised
+// the median; nullopt when its words name no objective (the caller names
+// file and field).
+template <class Json>
+[[nodiscard]] std::optional<FitObjective> stated_fit_objective(const Json& j) {
+  if (!j.contains("objective")) return FitObjective::median;
+  return parse_fit_objective(j.at("objective").template get<std::string>());
+}
+
 }  // namespace pb

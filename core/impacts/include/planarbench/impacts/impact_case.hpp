@@ -22,21 +22,22 @@ inline constexpr double kImpactRunLimit_s = 0.06;
 // The parameters of the contact law that every engine is fitted with: the
 // case's Kelvin-Voigt law (paper eq. 1), each engine expressing it in its own
 // model (mapping() says how), and the pair's Coulomb coefficient (SPEC §7).
+// Which normal law an impact's case states (issue 34 adds the last two):
+//   kelvin_voigt         K, zeta (paper eq. 1)
+//   lankarani_nikravesh  K delta^n [1 + 3 (1 - e^2)/4 delta' / delta'-]: K, n, e (eq. 7)
+//   hunt_crossley        K delta^n (1 + alpha delta'): K, n, alpha, the restitution
+//                        falling with the approach speed; stated as eq. 7's family
+//                        with chi = alpha times the impact's approach speed (case.hpp)
+enum class ImpactLawKind { kelvin_voigt, lankarani_nikravesh, hunt_crossley };
+
 struct ImpactLaw {
-  double stiffness_n_per_m = 1e4;  // N/m, K (N/m^n for Lankarani-Nikravesh)
+  double stiffness_n_per_m = 1e4;  // N/m, K (N/m^n for the two with an exponent)
   double damping_ratio = 0.2;      // -, zeta: c = 2 zeta sqrt(K m), m the object's mass
   double friction = 0.2;           // -, Coulomb mu
-  // Lankarani-Nikravesh instead of Kelvin-Voigt (issue 34: the paper's eq. 7,
-  // a Hertz exponent and restitution e in place of zeta)
-  bool lankarani_nikravesh = false;
+  ImpactLawKind kind = ImpactLawKind::kelvin_voigt;
   double exponent = 1.5;           // n
-  double restitution = 0.6;        // e
-  // Hunt and Crossley's own damping instead (issue 34): F = K delta^n (1 +
-  // alpha delta_dot), alpha free, the restitution falling with the approach
-  // speed; the case states it as eq. 7's family with chi = alpha times the
-  // impact's approach speed (case.hpp), the exponent n as above
-  bool hunt_crossley = false;
-  double damping_s_per_m = 0.0;    // alpha
+  double restitution = 0.6;        // e (Lankarani-Nikravesh)
+  double damping_s_per_m = 0.0;    // alpha (Hunt-Crossley)
 };
 
 // The case of one impact; `outline_points` of the ellipse (the reference and
@@ -48,9 +49,9 @@ struct ImpactLaw {
 // length and velocity times s, inertia times s^2, gravity times s; masses,
 // angles, rates and time unchanged, so the motion is the same one measured in
 // the new unit; a Kelvin-Voigt law keeps its K and c (force and length both
-// scale by s), K delta^n's K scales by s^(1 - n). For an engine tuned to a size range the object is not in
-// (Box2D: moving objects of 0.1 to 10 m, its manual's "Units"), as its users
-// scale their worlds.
+// scale by s), K delta^n's K scales by s^(1 - n). For an engine tuned to a
+// size range the object is not in (Box2D: moving objects of 0.1 to 10 m, its
+// manual's "Units"), as its users scale their worlds.
 [[nodiscard]] Case scaled_impact_case(Case c, double s);
 [[nodiscard]] ImpactObject scaled_impact_object(ImpactObject o, double s);
 

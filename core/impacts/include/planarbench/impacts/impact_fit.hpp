@@ -3,14 +3,13 @@
 // (impact_error.hpp) over the impacts fitted to, minimised by NLopt's
 // Nelder-Mead simplex on the parameters mapped to the unit cube (a median is
 // flat in small steps: a derivative-free simplex suits it; NLopt is Debian's
-// libnlopt). Every
-// evaluation runs the impacts on `jobs` threads, each with its own
-// predictor; results land by index, so the fit is the same at any `jobs`.
+// libnlopt). Every evaluation runs the impacts on `jobs` threads, each with
+// its own predictor; results land by index, so the fit is the same at any
+// `jobs`.
 #pragma once
 
 #include <cstdint>
 #include <functional>
-#include <optional>
 #include <string>
 #include <vector>
 

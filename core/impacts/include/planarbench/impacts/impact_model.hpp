@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "planarbench/engine.hpp"
+#include "planarbench/impacts/impact_case.hpp"
 #include "planarbench/impacts/impact_data.hpp"
 #include "planarbench/impacts/impact_object.hpp"
 #include "planarbench/impacts/impact_simulation.hpp"
@@ -97,12 +98,10 @@ struct EngineModelSpec {
   // (scaled_impact_case), its velocities read back in m/s
   double length_scale = 1.0;
   bool fit_stiffness = true;
-  // Lankarani-Nikravesh (K in N/m^n, the exponent n, e, mu) instead of
-  // Kelvin-Voigt (K, zeta, mu): an engine that takes the law as the case
-  // states it (the reference)
-  bool lankarani_nikravesh = false;
-  // Hunt-Crossley (K in N/m^n, n, alpha in s/m, mu): the reference
-  bool hunt_crossley = false;
+  // the law fitted: Kelvin-Voigt (K, zeta, mu); Lankarani-Nikravesh (K in
+  // N/m^n, n, e, mu) and Hunt-Crossley (K, n, alpha in s/m, mu) for an engine
+  // that takes the law as the case states it (the reference)
+  ImpactLawKind law = ImpactLawKind::kelvin_voigt;
   std::string representation;  // one line: how the engine represents the ellipse
 };
 [[nodiscard]] std::unique_ptr<ImpactModel> engine_impact_model(EngineModelSpec spec);
