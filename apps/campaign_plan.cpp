@@ -321,6 +321,15 @@ std::vector<double> CampaignPlan::axis_values(const RunRef& r) const {
   return out;
 }
 
+namespace {
+
+// an axis of `key` sets `engine`'s step (cost() and cost_by_engine() scale by it)
+bool sets_step(const std::string& key, const std::string& engine) {
+  return key == "dt" || key == engine + ".dt";
+}
+
+}  // namespace
+
 double CampaignPlan::cost(std::int64_t id) const {
   const RunRef r = decode(id);
   const CampaignCasePlan& cp = cases[r.case_index];
@@ -328,12 +337,32 @@ double CampaignPlan::cost(std::int64_t id) const {
   double c = expected_cost(cp.c.name, engine, cp.c.duration_s);
   const double dt0 = cp.default_dt[r.engine_index];
   for (std::size_t k = 0; k < axes.size(); ++k) {
-    const std::string& key = axes[k].axis.key;
-    if ((key == "dt" || key == engine + ".dt") && std::isfinite(dt0)) {
+    if (sets_step(axes[k].axis.key, engine) && std::isfinite(dt0)) {
       c *= dt0 / axes[k].axis.values[r.point[k]];
     }
   }
   return c;
+}
+
+std::vector<double> CampaignPlan::cost_by_engine() const {
+  std::vector<double> out(engines.size(), 0.0);
+  for (const CampaignCasePlan& cp : cases) {
+    for (std::size_t e = 0; e < engines.size(); ++e) {
+      double c = expected_cost(cp.c.name, engines[e], cp.c.duration_s);
+      const double dt0 = cp.default_dt[e];
+      for (const CampaignAxisPlan& a : axes) {
+        if (sets_step(a.axis.key, engines[e]) && std::isfinite(dt0)) {
+          double f = 0.0;  // cost() scales by dt0 / dt at each point
+          for (const double v : a.axis.values) f += dt0 / v;
+          c *= f;
+        } else {
+          c *= static_cast<double>(a.axis.values.size());
+        }
+      }
+      out[e] += c;
+    }
+  }
+  return out;
 }
 
 std::string CampaignPlan::describe(std::int64_t id) const {

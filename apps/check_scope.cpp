@@ -131,10 +131,15 @@ std::vector<RunOutOfScope> runs_out_of_scope(const ResultsFile& results,
         if (want == truths.end() || r.status != RunStatus::ok || covered(covers, "", "truth")) {
           continue;
         }
+        // what a file holds is read as it is: a mode that is not a string
+        // (an edited file) names no kind, shown as its JSON (issue 49: a
+        // number ended `check` in nlohmann's type_error)
         const auto physics = r.mapping.find("physics");
-        const std::string mode = physics != r.mapping.end() && physics->is_object()
-                                     ? physics->value("mode", std::string())
-                                     : std::string();
+        std::string mode;
+        if (physics != r.mapping.end() && physics->is_object()) {
+          const auto m = physics->find("mode");
+          if (m != physics->end()) mode = m->is_string() ? m->get<std::string>() : m->dump();
+        }
         const std::string kind = truth_kind_of_mode(mode);
         if (kind != want->second) {
           out.push_back(RunOutOfScope{

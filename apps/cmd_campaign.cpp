@@ -84,19 +84,15 @@ int plan_campaign(const CampaignOptionsCli& opt) {
                 static_cast<long long>(per_case * static_cast<std::int64_t>(plan.cases.size())));
   }
   // the estimate, by engine
-  std::map<std::string, double> by_engine;
+  const std::vector<double> by_engine = plan.cost_by_engine();
   double total = 0.0;
-  PlanProgress costing("estimating the cost of the runs", n, opt.quiet);
-  for (std::int64_t id = 0; id < n; ++id) {
-    costing.tick(id + 1);
-    const double c = plan.cost(id);
-    by_engine[plan.engines[plan.decode(id).engine_index]] += c;
-    total += c;
-  }
+  for (const double c : by_engine) total += c;
   std::printf("estimated cost: %.4g CPU-s (measured wall s per simulated s of each case and "
               "engine at its default step, scaled by default step / step)\n",
               total);
-  for (const auto& e : plan.engines) std::printf("  %-10s %.4g CPU-s\n", e.c_str(), by_engine[e]);
+  for (std::size_t e = 0; e < plan.engines.size(); ++e) {
+    std::printf("  %-10s %.4g CPU-s\n", plan.engines[e].c_str(), by_engine[e]);
+  }
   if (opt.shards > 1) {
     const auto shards = partition(plan, opt.shards, opt.quiet);
     double most = 0.0;

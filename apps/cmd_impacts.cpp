@@ -19,6 +19,7 @@
 #include "commands.hpp"
 #include "impact_models.hpp"
 #include "impact_tasks.hpp"
+#include "planarbench/did_you_mean.hpp"
 #include "planarbench/errors.hpp"
 #include "planarbench/impacts/impact_data.hpp"
 #include "planarbench/impacts/impact_identification.hpp"
@@ -68,9 +69,9 @@ struct LoadedData {
   ImpactTable table;
 };
 
-LoadedData load_data(const ImpactsOptions& opt) {
+LoadedData load_data(const ImpactsOptions& opt, const std::string& option = "--data") {
   LoadedData d;
-  d.set = read_impacts(opt.data);
+  d.set = read_impacts(opt.data, option);
   const ImpactObject object;
   d.convention = check_convention(d.set, object);
   d.table = make_impact_table(d.set, object, d.convention.best().convention);
@@ -400,6 +401,25 @@ int run_score(const ImpactsOptions& opt) {
   std::vector<std::string> names;
   for (const auto& [name, values] : frozen.models) names.push_back(name);
   auto all = impact_models(engine_list(engines_among(names)), !d.set.models.empty());
+  // every model of the fit file is scored, once (issue 49: a renamed one was
+  // silently skipped, one listed twice accepted with no word of which counts)
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    for (std::size_t j = 0; j < k; ++j) {
+      if (names[j] == names[k]) {
+        throw InputError(opt.params, 0, "/campaign models",
+                         fmt::format("lists model '{}' twice (rows {} and {}): a fit file holds "
+                                     "each model's parameters once",
+                                     names[k], j, k));
+      }
+    }
+    if (!has_model(all, names[k])) {
+      std::vector<std::string> known;
+      for (const auto& m : all) known.push_back(m->name());
+      throw InputError(opt.params, 0, "/campaign models",
+                       fmt::format("'{}' is no model `impacts score` knows{}; one of {}", names[k],
+                                   did_you_mean(names[k], known), fmt::join(known, ", ")));
+    }
+  }
   // A learned model's frozen form is the file it learned from (named and
   // hashed in the fit file) and the fit's training, which is deterministic:
   // it is trained again on that whole file, as the fit's fold "all" was.
@@ -414,7 +434,7 @@ int run_score(const ImpactsOptions& opt) {
       t.data = opt.training_data.empty() ? frozen.data_path : opt.training_data;
       t.quiet = true;
       try {
-        LoadedData loaded = load_data(t);
+        LoadedData loaded = load_data(t, opt.training_data.empty() ? "the fit's data_path" : "--training-data");
         if (loaded.set.sha256 != frozen.data_sha256) {
           training_problem = fmt::format("{} has sha256 {}, the fit's training file {}", t.data,
                                          loaded.set.sha256.substr(0, 16),

@@ -20,6 +20,7 @@ struct ReportOptionsCli {
   std::string sweep;
   std::vector<std::string> campaigns;
   std::string impacts;
+  std::string scenes;
   bool quiet = false;
 };
 
@@ -34,7 +35,8 @@ void check_report_spares_inputs(const ReportOptionsCli& opt) {
   std::vector<NamedInput> inputs = {{"the results file", opt.results},
                                     {"--thresholds", opt.thresholds},
                                     {"--sweep", opt.sweep},
-                                    {"--impacts", opt.impacts}};
+                                    {"--impacts", opt.impacts},
+                                    {"--scenes", opt.scenes}};
   for (const auto& c : opt.campaigns) inputs.push_back({"--campaign", c});
   const fs::path dir = opt.out;
   const fs::path figures = dir / "figures";
@@ -63,6 +65,7 @@ int run_report(const ReportOptionsCli& opt) {
   options.sweep = opt.sweep;
   options.campaigns.assign(opt.campaigns.begin(), opt.campaigns.end());
   options.impacts = opt.impacts;
+  options.scenes = opt.scenes;
   // a misspelt case or engine would otherwise be a check silently never made
   options.check_thresholds = [&opt](const std::vector<Threshold>& t, const ResultsFile& r) {
     check_threshold_names(opt.thresholds, t, r);
@@ -130,6 +133,11 @@ Action add_report_command(CLI::App& app) {
   cmd->add_option("--impacts", opt->impacts,
                   "A file of `planarbench impacts fit` or `impacts score`: adds the measured-impacts "
                   "section (such a file may also be given as the results file)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--scenes", opt->scenes,
+                  "A results file of scenes (`planarbench run --case scenes`): adds the scenes "
+                  "section (per family: sag, drift, creep, support and interface forces, energy, "
+                  "penetration and cost against the number of bodies)")
       ->check(CLI::ExistingFile);
   cmd->add_flag("--quiet,-q", opt->quiet, "Print nothing on success");
   return [opt] { return run_report(*opt); };

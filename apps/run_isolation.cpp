@@ -141,11 +141,16 @@ ChildEnd run_child(const IsolatedRun& spec, const fs::path& out,
   const auto start = std::chrono::steady_clock::now();
   std::string prog_buf;
   bool prog_open = true, err_open = true;
+  bool reaped = false;
   char buf[4096];
   while (prog_open || err_open) {
     pollfd fds[2] = {{prog_open ? prog_r.get() : -1, POLLIN, 0}, {err_open ? err_r.get() : -1, POLLIN, 0}};
-    const int n = ::poll(fds, 2, 200);
+    // once the child is reaped, only what its pipes hold already is read: a
+    // process it started that outlived it (it should not: engine processes
+    // die with their parent) may hold the pipes open for ever (issue 49)
+    const int n = ::poll(fds, 2, reaped ? 0 : 200);
     if (n < 0 && errno != EINTR) break;
+    if (reaped && n == 0) break;
     if (fds[0].revents != 0) {
       const ssize_t k = ::read(prog_r.get(), buf, sizeof buf);
       if (k <= 0) {
@@ -181,8 +186,9 @@ ChildEnd run_child(const IsolatedRun& spec, const fs::path& out,
       end.timed_out = true;
       ::kill(pid, SIGKILL);
     }
+    if (!reaped && ::waitpid(pid, &end.wait_status, WNOHANG) == pid) reaped = true;
   }
-  while (::waitpid(pid, &end.wait_status, 0) < 0 && errno == EINTR) {
+  while (!reaped && ::waitpid(pid, &end.wait_status, 0) < 0 && errno == EINTR) {
   }
   return end;
 }

@@ -27,10 +27,12 @@ void check_threshold_names(const std::string& file, const std::vector<Threshold>
                            const ResultsFile& results) {
   std::vector<std::string> cases;
   for (const auto& cr : results.cases) cases.push_back(cr.case_name);
-  try {
-    for (const auto& p : resolve_cases("all", cases_dir(""))) cases.push_back(p.stem().string());
-  } catch (const InputError&) {
-    // no cases folder: the results file's cases are all there is
+  for (const char* folder : {"all", "scenes"}) {
+    try {
+      for (const auto& p : resolve_cases(folder, cases_dir(""))) cases.push_back(p.stem().string());
+    } catch (const InputError&) {
+      // no cases (or scenes) folder: the results file's cases are all there is
+    }
   }
   std::sort(cases.begin(), cases.end());
   cases.erase(std::unique(cases.begin(), cases.end()), cases.end());

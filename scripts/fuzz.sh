@@ -38,6 +38,7 @@ TARGETS=(
   "fuzz_outline|outline|"
   "fuzz_impact_data|impact_data|-max_len=16384"
   "fuzz_impact_work|impact_work|-max_len=16384"
+  "fuzz_mujoco3_batch|mujoco3_batch|-max_len=4096"
 )
 
 failed=0

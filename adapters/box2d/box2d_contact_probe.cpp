@@ -118,51 +118,26 @@ struct ChildPair {
   }
 };
 
-}  // namespace
+// the fixture-child pair of a and b that contact c joins
+ChildPair child_pair(const b2Body& a, const b2Contact& c) {
+  const bool a_first = c.GetFixtureA()->GetBody() == &a;
+  const b2Fixture* fa = a_first ? c.GetFixtureA() : c.GetFixtureB();
+  const b2Fixture* fb = a_first ? c.GetFixtureB() : c.GetFixtureA();
+  const int ca = a_first ? c.GetChildIndexA() : c.GetChildIndexB();
+  const int cb = a_first ? c.GetChildIndexB() : c.GetChildIndexA();
+  return ChildPair{fixture_index(fa), ca, fixture_index(fb), cb, fa, fb};
+}
 
-ContactGeometry probe_contact(const b2Body& a, const b2Body& b, ProbeScope scope) {
+// Box2D's manifolds (or gaps) of the child pairs. Sorted into fixture-list
+// order first, so that ties between equally deep points resolve as a pass
+// over the lists would, whichever order the contacts came in.
+ContactGeometry probe_pairs(const b2Body& a, const b2Body& b, std::vector<ChildPair>& pairs) {
   const b2Transform& xfa = a.GetTransform();
   const b2Transform& xfb = b.GetTransform();
   ContactGeometry deepest;  // from manifolds
   ContactGeometry closest;  // from b2Distance
   double best_separation = std::numeric_limits<double>::infinity();
   double best_gap = std::numeric_limits<double>::infinity();
-
-  // The fixture-child pairs Box2D's broad phase holds for the two bodies
-  // (b2Body::GetContactList): those whose fat AABBs overlap, which includes
-  // every pair a manifold can have points for (touching means within the
-  // radii, where the AABBs, radii included, overlap). Pairs farther apart
-  // than the fat margin (b2_aabbExtension, 0.1 m, plus the predicted motion)
-  // are not measured: the probe costs what Box2D's own contacts cost, not a
-  // pass over every child of a long chain (issue 15: a 1000 s run's ground
-  // chain has ~1e6 segments). Sorted into fixture-list order so that ties
-  // between equally deep points resolve as a pass over the lists would.
-  thread_local std::vector<ChildPair> pairs;
-  pairs.clear();
-  if (scope == ProbeScope::every_child) {
-    int ia = 0;
-    for (const b2Fixture* fa = a.GetFixtureList(); fa != nullptr; fa = fa->GetNext(), ++ia) {
-      int ib = 0;
-      for (const b2Fixture* fb = b.GetFixtureList(); fb != nullptr; fb = fb->GetNext(), ++ib) {
-        for (int ca = 0; ca < fa->GetShape()->GetChildCount(); ++ca) {
-          for (int cb = 0; cb < fb->GetShape()->GetChildCount(); ++cb) {
-            pairs.push_back(ChildPair{ia, ca, ib, cb, fa, fb});
-          }
-        }
-      }
-    }
-  }
-  for (const b2ContactEdge* e = a.GetContactList();
-       scope == ProbeScope::broad_phase && e != nullptr; e = e->next) {
-    if (e->other != &b) continue;
-    const b2Contact* c = e->contact;
-    const bool a_first = c->GetFixtureA()->GetBody() == &a;
-    const b2Fixture* fa = a_first ? c->GetFixtureA() : c->GetFixtureB();
-    const b2Fixture* fb = a_first ? c->GetFixtureB() : c->GetFixtureA();
-    const int ca = a_first ? c->GetChildIndexA() : c->GetChildIndexB();
-    const int cb = a_first ? c->GetChildIndexB() : c->GetChildIndexA();
-    pairs.push_back(ChildPair{fixture_index(fa), ca, fixture_index(fb), cb, fa, fb});
-  }
   std::sort(pairs.begin(), pairs.end());
 
   for (const ChildPair& cp : pairs) {
@@ -220,6 +195,47 @@ ContactGeometry probe_contact(const b2Body& a, const b2Body& b, ProbeScope scope
     }
   }
   return deepest.valid ? deepest : closest;
+}
+
+}  // namespace
+
+ContactGeometry probe_contact(const b2Body& a, const b2Body& b, ProbeScope scope) {
+  // The fixture-child pairs Box2D's broad phase holds for the two bodies
+  // (b2Body::GetContactList): those whose fat AABBs overlap, which includes
+  // every pair a manifold can have points for (touching means within the
+  // radii, where the AABBs, radii included, overlap). Pairs farther apart
+  // than the fat margin (b2_aabbExtension, 0.1 m, plus the predicted motion)
+  // are not measured: the probe costs what Box2D's own contacts cost, not a
+  // pass over every child of a long chain (issue 15: a 1000 s run's ground
+  // chain has ~1e6 segments).
+  thread_local std::vector<ChildPair> pairs;
+  pairs.clear();
+  if (scope == ProbeScope::every_child) {
+    int ia = 0;
+    for (const b2Fixture* fa = a.GetFixtureList(); fa != nullptr; fa = fa->GetNext(), ++ia) {
+      int ib = 0;
+      for (const b2Fixture* fb = b.GetFixtureList(); fb != nullptr; fb = fb->GetNext(), ++ib) {
+        for (int ca = 0; ca < fa->GetShape()->GetChildCount(); ++ca) {
+          for (int cb = 0; cb < fb->GetShape()->GetChildCount(); ++cb) {
+            pairs.push_back(ChildPair{ia, ca, ib, cb, fa, fb});
+          }
+        }
+      }
+    }
+  }
+  for (const b2ContactEdge* e = a.GetContactList();
+       scope == ProbeScope::broad_phase && e != nullptr; e = e->next) {
+    if (e->other == &b) pairs.push_back(child_pair(a, *e->contact));
+  }
+  return probe_pairs(a, b, pairs);
+}
+
+ContactGeometry probe_contact(const b2Body& a, const b2Body& b, const b2Contact* const* contacts,
+                              int count) {
+  thread_local std::vector<ChildPair> pairs;
+  pairs.clear();
+  for (int i = 0; i < count; ++i) pairs.push_back(child_pair(a, *contacts[i]));
+  return probe_pairs(a, b, pairs);
 }
 
 bool broad_phase_pair(const b2Body& a, const b2Body& b) {

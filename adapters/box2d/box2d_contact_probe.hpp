@@ -5,6 +5,7 @@
 #pragma once
 
 #include <box2d/b2_body.h>
+#include <box2d/b2_contact.h>
 
 #include "planarbench/case.hpp"
 
@@ -29,6 +30,11 @@ struct ContactGeometry {
 enum class ProbeScope { broad_phase, every_child };
 [[nodiscard]] ContactGeometry probe_contact(const b2Body& a, const b2Body& b,
                                             ProbeScope scope = ProbeScope::broad_phase);
+// ... over the given contacts of a and b (b2World::GetContactList, gathered
+// by the caller per pair): the broad-phase pairs without a walk over a's
+// contact list, which for a ground holds every body resting on it
+[[nodiscard]] ContactGeometry probe_contact(const b2Body& a, const b2Body& b,
+                                            const b2Contact* const* contacts, int count);
 
 // Whether Box2D's broad phase holds some fixture-child pair of a and b (their
 // fat AABBs overlap): what probe_contact's `valid` is with

@@ -43,19 +43,27 @@ void Box2dEngine::advance_to(double t_s) {
   if (!fault_.empty()) throw EngineError(fault_);
   // a fixed-step engine stops at its last step not after t_s (engine.hpp)
   const double dt = settings_.dt_s;
-  while (static_cast<double>(steps_ + 1) * dt <= t_s + 1e-9 * dt) step();
+  bool first = true;
+  while (static_cast<double>(steps_ + 1) * dt <= t_s + 1e-9 * dt) {
+    // a call that steps starts the next output interval (one that does not
+    // leaves the last interval's forces reported)
+    if (first) {
+      ++interval_;
+      interval_steps_ = 0;
+      first = false;
+    }
+    step();
+  }
 }
 
 void Box2dEngine::step() {
   const float dt = static_cast<float>(settings_.dt_s);
   if (!collide_) apply_injected_forces();  // inject mode (collide_ caches !inject())
-  for (auto& st : pair_states_) {
-    st.step_impulse_ns = 0.0;
-    st.step_tangent_impulse_ns = 0.0;
-  }
+  pairs_.step = steps_ + 1;                // stamps this step's impulses (PostSolve)
   world_->Step(dt, settings_.velocity_iterations, settings_.position_iterations);
   ++t_world_steps;
   ++steps_;
+  ++interval_steps_;
   time_s_ = static_cast<double>(steps_) * settings_.dt_s;
   check_state();
   sample_pairs();
@@ -128,39 +136,91 @@ void Box2dEngine::fail(std::string reason) {
 }
 
 void Box2dEngine::sample_pairs() {
-  for (std::size_t k = 0; k < samples_.size(); ++k) {
-    if (!collide_) {  // inject mode
-      sample_injected_pair(k);
-    } else {
-      sample_engine_pair(k);
-    }
+  if (!collide_) {  // inject mode: every declared pair, in closed form
+    for (std::size_t k = 0; k < samples_.size(); ++k) sample_injected_pair(k);
+    return;
   }
+  // every body's motion once, for the bounds of its pairs
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    const b2Body& b = *bodies_[i];
+    motion_[i] = Motion{from_b2(b.GetWorldCenter()), from_b2(b.GetLinearVelocity()),
+                        static_cast<double>(b.GetAngularVelocity())};
+  }
+  if (steps_ > 0) list_contacts();
+  for (const int k : active_) sample_engine_pair(static_cast<std::size_t>(k));
 }
 
-bool Box2dEngine::far_apart(std::size_t k, double& lower_bound_m) const {
-  const FarBound& fb = far_[k];
-  if (!fb.usable) return false;
-  const ContactPair& p = case_.contacts[k];
-  const b2Body& a = *bodies_[static_cast<std::size_t>(p.body_a)];
-  const b2Body& b = *bodies_[static_cast<std::size_t>(p.body_b)];
+void Box2dEngine::list_contacts() {
+  previous_active_.swap(active_);
+  active_.clear();
+  listed_.clear();
+  // Box2D's contacts: the fixture pairs whose fat AABBs overlap (its broad
+  // phase), every one the filter let through, so each has a pair. One whose
+  // manifold is empty and whose bodies are farther apart than two steps can
+  // close is apart and not sampled, its pair not even looked up: three of
+  // four of a settled pile's (fat AABBs 0.1 m wider than its 5 cm disks)
+  for (b2Contact* c = world_->GetContactList(); c != nullptr; c = c->GetNext()) {
+    const int ia = body_index(*c->GetFixtureA());
+    const int ib = body_index(*c->GetFixtureB());
+    double gap_bound = 0.0;  // m
+    if (!c->IsTouching() && far_apart(ia, ib, gap_bound)) continue;
+    const int k = pairs_.find_or_add(ia, ib);
+    if (k < 0) continue;
+    const auto uk = static_cast<std::size_t>(k);
+    if (uk >= samples_.size()) grow_pairs();
+    if (seen_[uk] != steps_) {
+      seen_[uk] = steps_;
+      head_[uk] = -1;
+      active_.push_back(k);
+    }
+    listed_.push_back(Listed{c, head_[uk]});
+    head_[uk] = static_cast<int>(listed_.size()) - 1;
+  }
+  // a pair no longer listed (apart, or Box2D destroyed its contacts as its
+  // AABBs parted): sampled once more, as apart, which ends an open episode,
+  // and on to the interval's end if it was pushed in it (its mean force is
+  // reported); then no longer
+  for (const int k : previous_active_) {
+    const auto uk = static_cast<std::size_t>(k);
+    const PairSample& s = samples_[uk];
+    const bool pushed = s.interval == interval_ && s.interval_impulse_ns > 0.0;
+    if (seen_[uk] == steps_ || !(s.listed || pushed)) continue;
+    seen_[uk] = steps_;
+    head_[uk] = -1;
+    active_.push_back(k);
+  }
+  std::sort(active_.begin(), active_.end());
+}
+
+bool Box2dEngine::far_apart(int body_a, int body_b, double& lower_bound_m) const {
+  // a fixed half-plane as a (its line), the other's bounding radius; or two
+  // bounding radii
+  if (far_[static_cast<std::size_t>(body_b)].plane) std::swap(body_a, body_b);
+  const FarBound& fa = far_[static_cast<std::size_t>(body_a)];
+  const FarBound& fb = far_[static_cast<std::size_t>(body_b)];
+  if (fb.plane || !std::isfinite(fb.radius_m) || (!fa.plane && !std::isfinite(fa.radius_m))) {
+    return false;
+  }
   // centres of mass and velocities as Box2D holds them (no angle needed)
-  const Vec2 ca = from_b2(a.GetWorldCenter());
-  const Vec2 cb = from_b2(b.GetWorldCenter());
-  const Vec2 va = from_b2(a.GetLinearVelocity());
-  const Vec2 vb = from_b2(b.GetLinearVelocity());
-  const double wa = static_cast<double>(a.GetAngularVelocity());
-  const double wb = static_cast<double>(b.GetAngularVelocity());
+  const Motion& a = motion_[static_cast<std::size_t>(body_a)];
+  const Motion& b = motion_[static_cast<std::size_t>(body_b)];
+  const Vec2& ca = a.centre_m;
+  const Vec2& cb = b.centre_m;
+  const Vec2& va = a.velocity_mps;
+  const Vec2& vb = b.velocity_mps;
+  const double wa = a.spin_radps;
+  const double wb = b.spin_radps;
   // the gap of the skinned surfaces (the case's surfaces) is at least the
   // centre's height above a half-plane, or the centres' distance, less the
   // bounding radii, less 1e-5 m for the float placement of Box2D's shapes
   // (~8 ulp at 10 m)
   constexpr double kFloatMargin_m = 1e-5;
-  double speed = (vb - va).norm() + std::abs(wb) * fb.radius_b_m;  // m/s
-  if (fb.plane) {
-    lower_bound_m = (cb - fb.point_m).dot(fb.normal) - fb.radius_b_m - kFloatMargin_m;
+  double speed = (vb - va).norm() + std::abs(wb) * fb.radius_m;  // m/s
+  if (fa.plane) {
+    lower_bound_m = (cb - fa.point_m).dot(fa.normal) - fb.radius_m - kFloatMargin_m;
   } else {
-    lower_bound_m = (cb - ca).norm() - fb.radius_a_m - fb.radius_b_m - kFloatMargin_m;
-    speed += std::abs(wa) * fb.radius_a_m;
+    lower_bound_m = (cb - ca).norm() - fa.radius_m - fb.radius_m - kFloatMargin_m;
+    speed += std::abs(wa) * fa.radius_m;
   }
   // semi-implicit Euler moves a step's positions with its end velocity:
   // within one step a gap changes by at most h (speed + |g| h); twice that
@@ -171,38 +231,83 @@ bool Box2dEngine::far_apart(std::size_t k, double& lower_bound_m) const {
 }
 
 void Box2dEngine::sample_engine_pair(std::size_t k) {
-  const ContactPair& p = case_.contacts[k];
+  const ContactPair& p = pairs_.pair(static_cast<int>(k));
   const b2Body& a = *bodies_[static_cast<std::size_t>(p.body_a)];
   const b2Body& b = *bodies_[static_cast<std::size_t>(p.body_b)];
   const PairSample before = samples_[k];
   PairSample& s = samples_[k];
-  const double impulse = pair_states_[k].step_impulse_ns;
-  // Far apart (no episode open, no impulse this step, and the gap's lower
-  // bound beyond what one step can close): the tracker is given the bound as
-  // the gap. Onsets, offsets and within-step impacts read only the samples
-  // next to a touching step, which are never far, so every episode is the
-  // one the probe's exact gap gives; the probe's b2Distance was 17 % of a
-  // step of falling_ball (callgrind).
-  double lower_bound = 0.0;
-  if (steps_ > 0 && impulse == 0.0 && !tracker_.in_contact(p.body_a, p.body_b) &&
-      far_apart(k, lower_bound)) {
-    s.valid = broad_phase_pair(a, b);
+  const double impulse = pairs_.state(static_cast<int>(k)).impulse_ns(steps_);
+  const double tangent_impulse = pairs_.state(static_cast<int>(k)).tangent_impulse_ns(steps_);
+  // the pair's impulses over the output interval so far: its force is their
+  // mean (box2d_mapping_notes.cpp, "forces"); at t = 0 nothing has acted
+  if (s.interval != interval_) {
+    s.interval = interval_;
+    s.interval_impulse_ns = 0.0;
+    s.interval_tangent_impulse_ns = 0.0;
+  }
+  s.interval_impulse_ns += impulse;
+  s.interval_tangent_impulse_ns += tangent_impulse;
+  // (reported_force = step: the last step's, impulse / dt)
+  const long steps_in = interval_force_ ? interval_steps_ : (steps_ > 0 ? 1 : 0);
+  const double interval_s = static_cast<double>(steps_in) * settings_.dt_s;
+  const double mean_force =
+      steps_in == 0 ? 0.0 : (interval_force_ ? s.interval_impulse_ns : impulse) / interval_s;
+  const double mean_tangential =
+      steps_in == 0
+          ? 0.0
+          : (interval_force_ ? s.interval_tangent_impulse_ns : tangent_impulse) / interval_s;
+  bucket_.clear();
+  for (int e = steps_ > 0 ? head_[k] : -1; e >= 0; e = listed_[static_cast<std::size_t>(e)].next) {
+    bucket_.push_back(listed_[static_cast<std::size_t>(e)].contact);
+  }
+  // Box2D holds no contact of the pair any more: apart, and not measured
+  // (the sample a pass over every pair gave such a pair each step)
+  if (steps_ > 0 && bucket_.empty()) {
+    s.valid = false;
+    s.listed = false;
     s.step_force_n = 0.0;
-    s.force_n = 0.0;
-    s.tangential_force_n = 0.0;
-    s.penetration_m = s.valid ? -lower_bound : kNaN;
+    // what it had from the solver this interval still counts (0 by step)
+    s.force_n = mean_force;
+    s.tangential_force_n = mean_tangential;
+    s.penetration_m = kNaN;
+    s.tracked_m = kNaN;
+    s.speed_mps = kNaN;
+    trackers_[k].observe_separated(time_s_, p.body_a, p.body_b, kNaN);
+    s.open = false;
+    return;
+  }
+  s.listed = true;
+  // Far apart (no episode open, no impulse this step, and the gap's lower
+  // bound beyond what two steps can close): the bound stands for the gap,
+  // without the probe (its b2Distance was 17 % of a step of falling_ball,
+  // callgrind) or the tracker. Onsets, offsets and within-step impacts read
+  // only the samples next to a touching step, which are never far, so every
+  // episode is the one the probe's exact gap gives; the next sample that is
+  // not far observes this one first (track), and nothing else reads what
+  // the tracker was last given (episode_tracker.cpp). list_contacts leaves
+  // out such a pair whose manifolds are all empty before it gets here.
+  double lower_bound = 0.0;
+  if (steps_ > 0 && impulse == 0.0 && !before.open && far_apart(p.body_a, p.body_b, lower_bound)) {
+    s.valid = true;
+    s.step_force_n = 0.0;
+    s.force_n = mean_force;
+    s.tangential_force_n = mean_tangential;
+    s.penetration_m = -lower_bound;
     s.tracked_m = s.penetration_m;
     s.speed_mps = kNaN;
-    track(k, before, s);
     return;
   }
   // before the first step Box2D's broad phase has not paired anything yet
   const ContactGeometry g =
-      probe_contact(a, b, steps_ == 0 ? ProbeScope::every_child : ProbeScope::broad_phase);
+      steps_ == 0 ? probe_contact(a, b, ProbeScope::every_child)
+                  : probe_contact(a, b, bucket_.data(), static_cast<int>(bucket_.size()));
+  // the step's impulse belongs to an episode open at the step's start or
+  // opening at its end
+  const bool was_open = before.open;
   s.valid = g.valid;
   s.step_force_n = impulse / settings_.dt_s;
-  s.force_n = s.step_force_n;
-  s.tangential_force_n = pair_states_[k].step_tangent_impulse_ns / settings_.dt_s;
+  s.force_n = mean_force;
+  s.tangential_force_n = mean_tangential;
   if (g.valid) {
     s.penetration_m = g.penetration_m;
     s.normal = g.normal;
@@ -215,27 +320,23 @@ void Box2dEngine::sample_engine_pair(std::size_t k) {
     const double scale =
         std::max({1.0, g.point_m.norm(), sa.position_m.norm(), sb.position_m.norm()});
     const double resolution = 8.0 * static_cast<double>(FLT_EPSILON) * scale;  // m
-    const bool open = tracker_.in_contact(p.body_a, p.body_b);
     s.tracked_m = g.penetration_m;
     if (g.touching) s.tracked_m = std::max(s.tracked_m, kTouching_m);
-    if (open && s.tracked_m <= 0.0 && s.tracked_m > -resolution) s.tracked_m = kTouching_m;
+    if (was_open && s.tracked_m <= 0.0 && s.tracked_m > -resolution) s.tracked_m = kTouching_m;
   } else {
     s.penetration_m = kNaN;
     s.tracked_m = kNaN;
     s.speed_mps = kNaN;
   }
-  // the step's impulse belongs to an episode open at the step's start or
-  // opening at its end
-  const bool was_open = tracker_.in_contact(p.body_a, p.body_b);
   track(k, before, s);
-  if (!was_open && !tracker_.in_contact(p.body_a, p.body_b) && impulse > 0.0) {
+  if (!was_open && !s.open && impulse > 0.0) {
     if (steps_ > 0 && before.valid && s.valid) {
       // apart at both ends of the step and pushed within it: Box2D's time of
       // impact solved a fast impact inside the step (b2World::SolveTOI, whose
       // impulses PostSolve reports): an episode of its own
       const double t_before = static_cast<double>(steps_ - 1) * settings_.dt_s;
-      tracker_.record_within_step(t_before, time_s_, p.body_a, p.body_b, -before.penetration_m,
-                                  before.speed_mps, -s.speed_mps, impulse);
+      trackers_[k].record_within_step(t_before, time_s_, p.body_a, p.body_b, -before.penetration_m,
+                                      before.speed_mps, -s.speed_mps, impulse);
     } else {
       orphan_impulse_ns_ += impulse;
     }
@@ -250,17 +351,19 @@ void Box2dEngine::sample_engine_pair(std::size_t k) {
 // bodies across the surface, and its trapezoid integrates the step's force
 // over the whole step (impulse = force dt exactly)
 void Box2dEngine::track(std::size_t k, const PairSample& before, PairSample& now) {
-  const ContactPair& p = case_.contacts[k];
+  const ContactPair& p = pairs_.pair(static_cast<int>(k));
   if (!now.valid) {
-    tracker_.observe_separated(time_s_, p.body_a, p.body_b, kNaN);
+    trackers_[k].observe_separated(time_s_, p.body_a, p.body_b, kNaN);
+    now.open = false;
     return;
   }
   if (steps_ > 0 && before.valid) {
     const double t_before = static_cast<double>(steps_ - 1) * settings_.dt_s;
-    tracker_.observe(t_before, p.body_a, p.body_b, before.tracked_m, now.speed_mps,
-                     now.step_force_n);
+    trackers_[k].observe(t_before, p.body_a, p.body_b, before.tracked_m, now.speed_mps,
+                         now.step_force_n);
   }
-  tracker_.observe(time_s_, p.body_a, p.body_b, now.tracked_m, now.speed_mps, now.step_force_n);
+  trackers_[k].observe(time_s_, p.body_a, p.body_b, now.tracked_m, now.speed_mps, now.step_force_n);
+  now.open = trackers_[k].in_contact(p.body_a, p.body_b);
 }
 
 void Box2dEngine::sample_injected_pair(std::size_t k) {
@@ -296,11 +399,17 @@ void Box2dEngine::body_states(std::vector<BodyState>& out) const {
 
 void Box2dEngine::contacts(std::vector<ContactSample>& out) const {
   out.clear();
-  for (std::size_t k = 0; k < samples_.size(); ++k) {
+  // the pairs sampled at the latest step (every other pair is apart)
+  for (const int kk : active_) {
+    const auto k = static_cast<std::size_t>(kk);
     const PairSample& s = samples_[k];
-    const ContactPair& p = case_.contacts[k];
-    // in contact: inside an episode, or pushed during the last step
-    if (!s.valid || !(tracker_.in_contact(p.body_a, p.body_b) || s.force_n > 0.0)) continue;
+    const ContactPair& p = pairs_.pair(kk);
+    // in contact: inside an episode, or pushed during the output interval
+    // (a pair no longer listed: only this, its last point and normal)
+    const bool pushed = s.force_n > 0.0;
+    if (s.valid ? !(pushed || s.open) : (s.listed || !pushed)) {
+      continue;
+    }
     ContactSample cs;
     cs.body_a = p.body_a;
     cs.body_b = p.body_b;
@@ -314,7 +423,16 @@ void Box2dEngine::contacts(std::vector<ContactSample>& out) const {
 }
 
 std::vector<ContactEpisode> Box2dEngine::episodes() const {
-  return tracker_.episodes();
+  // each pair's, in onset order (ties: in pair order)
+  std::vector<ContactEpisode> all;
+  for (const EpisodeTracker& t : trackers_) {
+    const std::vector<ContactEpisode> pair = t.episodes();
+    all.insert(all.end(), pair.begin(), pair.end());
+  }
+  std::stable_sort(all.begin(), all.end(), [](const ContactEpisode& a, const ContactEpisode& b) {
+    return a.onset_time_s < b.onset_time_s;
+  });
+  return all;
 }
 
 nlohmann::json Box2dEngine::mapping_with_onsets() const {
@@ -323,7 +441,7 @@ nlohmann::json Box2dEngine::mapping_with_onsets() const {
   nlohmann::json onsets = nlohmann::json::array();
   for (const auto& r : listener_.log()) {
     onsets.push_back({{"time_s", r.time_s},
-                      {"contact", case_.contacts[static_cast<std::size_t>(r.pair)].name},
+                      {"contact", pairs_.pair(r.pair).name},
                       {"m_eff_kg", r.m_eff_kg},
                       {"points", r.points},
                       {"approach_speed_mps", r.approach_mps},
@@ -362,6 +480,10 @@ Physics Box2dEngine::physics() const {
 nlohmann::json Box2dEngine::extra_attributes() const {
   nlohmann::json j = nlohmann::json::object();
   if (!inject()) j["impulse_outside_episodes_ns"] = orphan_impulse_ns_;
+  if (case_.has_contact_groups()) {
+    // how far the pair list grew: the pairs Box2D's broad phase ever held
+    j["contact_pairs_indexed"] = pairs_.size();
+  }
   return j;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <box2d/b2_body.h>
+#include <box2d/b2_contact.h>
 #include <box2d/b2_world.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "box2d_pair_book.hpp"
 #include "box2d_settings.hpp"
 #include "box2d_world_callbacks.hpp"
 #include "planarbench/engine.hpp"
@@ -35,14 +37,24 @@ extern thread_local long t_world_steps;
 // the contact state of one pair after the latest step
 struct PairSample {
   bool valid = false;
+  bool listed = false;          // measured: Box2D held a contact of the pair (or t = 0)
+  bool open = false;            // its episode is open (its tracker's in_contact, kept here)
   double penetration_m = kNaN;  // m, > 0 overlap (as measured)
   double tracked_m = kNaN;      // m, the penetration the episode tracker was given
   double speed_mps = kNaN;      // m/s, normal approach speed (> 0 approaching)
-  double force_n = 0.0;         // N, reported at this time (engine: the last step's)
-  double step_force_n = 0.0;    // N, mean force over the step that ended here
-  double tangential_force_n = 0.0;  // N, on body_b along t, mean over that step (issue 32)
-  Vec2 normal = Vec2::Zero();   // from body_a to body_b
+  // N, reported at this time: engine mode, the mean force over the output
+  // interval that ended here (box2d_mapping_notes.cpp, "forces"); inject
+  // mode, the law's force for the next step
+  double force_n = 0.0;
+  double step_force_n = 0.0;        // N, mean force over the step that ended here
+  double tangential_force_n = 0.0;  // N, on body_b along t, mean as force_n (issue 32)
+  Vec2 normal = Vec2::Zero();       // from body_a to body_b
   Vec2 point_m = Vec2::Zero();
+  // N s, the pair's normal and tangent impulses over the output interval
+  // `interval` (Box2dEngine::interval_), so far
+  long interval = -1;
+  double interval_impulse_ns = 0.0;
+  double interval_tangent_impulse_ns = 0.0;
 };
 
 inline bool finite(const BodyState& s) {
@@ -77,17 +89,33 @@ class Box2dEngine final : public Engine {
   static void validate_bodies(const Case& c, double dt_s);
   void create_bodies(double threshold_mps);
   void create_joints();
-  void map_pairs();
+  // the pairs' states and their mapping: the declared pairs', and the one
+  // every pair of each contact group starts from
+  void map_pairs(double threshold_mps, std::vector<PairState>& declared,
+                 std::vector<PairState>& groups);
+  // restitution and friction of a law, into `st` and the mapping entry `j`
+  void map_law(const ContactLaw& law, double friction, PairState& st, nlohmann::json& j) const;
+  // grows every per-pair vector to the pairs PairBook holds now
+  void grow_pairs();
+  // the group pairs that can touch at t = 0, before Box2D's broad phase has
+  // run (it pairs fixtures in the first b2World::Step): the case's boxes,
+  // fattened as Box2D's (b2_aabbExtension), swept once (broad_phase.hpp)
+  void add_initial_group_pairs();
   void step();
   void apply_injected_forces();
   void check_state();
   [[noreturn]] void fail(std::string reason);
   void sample_pairs();
+  // after a step: the pairs to sample (active_), each with Box2D's contacts
+  // of it (head_, listed_), from one walk over b2World::GetContactList; and
+  // once more, as apart, each pair that had a contact at its last sample
+  void list_contacts();
   void sample_engine_pair(std::size_t k);
-  // m, a lower bound of pair k's gap from the bodies' centres and bounding
-  // radii, and the most that gap can change in one step: the probe's exact
-  // gap is needed only where the pair can touch within a step
-  [[nodiscard]] bool far_apart(std::size_t k, double& lower_bound_m) const;
+  // m, a lower bound of the gap of bodies a and b from their centres and
+  // bounding radii (or a fixed half-plane's line), and whether it exceeds
+  // what that gap can change in two steps: the probe's exact gap is needed
+  // only where the pair can touch within a step
+  [[nodiscard]] bool far_apart(int body_a, int body_b, double& lower_bound_m) const;
   void sample_injected_pair(std::size_t k);
   void track(std::size_t k, const PairSample& before, PairSample& now);
   [[nodiscard]] nlohmann::json mapping_with_onsets() const;
@@ -100,31 +128,59 @@ class Box2dEngine final : public Engine {
   double time_s_ = 0.0;
   bool collide_ = true;  // the contact filter lets the case pairs collide (engine mode)
 
-  PairTable pairs_;
-  std::vector<PairState> pair_states_;
+  PairBook pairs_;  // the run's pairs and their listener state (box2d_pair_book.hpp)
   std::vector<BodyInertia> inertia_;
+  // per pair (indexed like pairs_, grown by grow_pairs)
   std::vector<PairSample> samples_;
-  // per pair, for far_apart: a fixed half-plane body_a's line (point, unit
-  // normal towards body_b) or the bodies' bounding radii
+  // per body, for far_apart: a fixed half-plane's line (point, unit outward
+  // normal), or the body's bounding radius (infinite for a moving half-plane)
   struct FarBound {
-    bool plane = false;    // body_a is a fixed half-plane
-    bool usable = false;   // a bound exists (a plane, or two finite radii)
+    bool plane = false;  // a fixed half-plane
     Vec2 point_m = Vec2::Zero();
     Vec2 normal = Vec2::Zero();
-    double radius_a_m = 0.0;
-    double radius_b_m = 0.0;
+    double radius_m = 0.0;
   };
-  std::vector<FarBound> far_;
+  std::vector<FarBound> far_;  // per body
+  // per body, its motion after the latest step (far_apart reads these for
+  // each of Box2D's contacts: one pass over the bodies, not two b2Body
+  // reads per contact)
+  struct Motion {
+    Vec2 centre_m = Vec2::Zero();
+    Vec2 velocity_mps = Vec2::Zero();
+    double spin_radps = 0.0;
+  };
+  std::vector<Motion> motion_;
+  // per pair (indexed like pairs_, grown by grow_pairs)
+  std::vector<long> seen_;  // the step whose contact walk last listed the pair
+  std::vector<int> head_;   // its last contact in listed_ then (-1: none)
+  // the pairs sampled at the latest step, ascending (the declared pairs'
+  // order of the pass over every pair this replaces), and the step before's
+  std::vector<int> active_;
+  std::vector<int> previous_active_;
+  // Box2D's contacts of the latest walk, chained per pair from head_
+  struct Listed {
+    const b2Contact* contact = nullptr;
+    int next = -1;  // the pair's previous contact in listed_, -1 none
+  };
+  std::vector<Listed> listed_;
+  std::vector<const b2Contact*> bucket_;  // scratch: one pair's contacts
+  // the output interval: advance_to calls that step; the force reported is
+  // each pair's impulse over the interval's steps / their time
+  long interval_ = 0;
+  long interval_steps_ = 0;
+  bool interval_force_ = false;  // the reported force is the interval's mean (reported_force)
   std::vector<double> latched_approach_mps_;  // inject mode: delta_dot at onset, per pair
   std::vector<Vec2> injected_force_n_;        // inject mode: total force per body this step, N
   std::vector<double> injected_torque_nm_;    // inject mode: about the centre of mass, N m
-  EpisodeTracker tracker_;
+  // per pair: a tracker of its own keeps each lookup in a map of one pair
+  // (a shared one's maps held a scene's thousands)
+  std::vector<EpisodeTracker> trackers_;
   double orphan_impulse_ns_ = 0.0;  // N s, solver impulse outside any episode (should stay 0)
 
   nlohmann::json mapping_ = nlohmann::json::object();
   // the callbacks must outlive the world (members are destroyed in reverse order)
   PairContactFilter filter_{pairs_, collide_};
-  PairContactListener listener_{pairs_, pair_states_, inertia_, time_s_};
+  PairContactListener listener_{pairs_, inertia_, time_s_};
   std::unique_ptr<b2World> world_;
   std::vector<b2Body*> bodies_;  // index = Case::bodies index
   std::string fault_;  // why the run stopped ("" while it did not): it does not go on

@@ -8,7 +8,9 @@
 
 namespace pb::internal::box2d {
 
-// The notes for engine mode (rigid contact, restitution) or injection mode.
-[[nodiscard]] nlohmann::json mapping_notes(bool inject);
+// The notes for engine mode (rigid contact, restitution) or injection mode;
+// interval_force: the contacts table's force is the mean over each output
+// interval (box2d.reported_force), else the last step's.
+[[nodiscard]] nlohmann::json mapping_notes(bool inject, bool interval_force = false);
 
 }  // namespace pb::internal::box2d

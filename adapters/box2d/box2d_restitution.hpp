@@ -22,12 +22,25 @@ constexpr double kMinApproachSpeed_mps = 1e-3;
 
 // The restitution the law produces in one collision of m_eff against a fixed
 // surface at approach speed v, without gravity:
-//   Kelvin-Voigt without ramp: kelvin_voigt_response (closed form of the
-//     clamped oscillator; depends on m_eff through zeta = c / (2 sqrt(k m)));
+//   Kelvin-Voigt without ramp: the closed form of the clamped oscillator
+//     (kelvin_voigt_response below zeta = 1, overdamped_kv_restitution from
+//     it on; depends on m_eff through zeta = c / (2 sqrt(k m)));
 //   everything else: simulate_collision (the restitution the law really
 //     produces, e.g. Lankarani-Nikravesh's is not its nominal e).
 // No allocation: safe inside Box2D's contact callbacks.
 [[nodiscard]] double law_restitution(const ContactLaw& law, double m_eff_kg, double v_approach_mps);
+
+// The clamped Kelvin-Voigt restitution for zeta = c / (2 sqrt(k m)) >= 1, in
+// closed form. With omega = sqrt(k/m), s = sqrt(zeta^2 - 1), the penetration
+// from delta(0) = 0, delta'(0) = v is delta = v (e^(r1 t) - e^(r2 t)) /
+// (2 omega s), r1,2 = omega (-zeta +- s); the clamp releases when
+// k delta + c delta' = 0, at omega s t_r = ln x, x = (zeta + s) / (zeta - s),
+// where delta' = -(omega / (2 zeta)) delta, and the mass leaves at that speed:
+//   e = -delta'(t_r) / v = (x^((s - zeta)/s) - x^(-(s + zeta)/s)) / (4 zeta s),
+// independent of v; e^-2 at zeta = 1 (delta = v t e^(-omega t), t_r = 2/omega),
+// the limit of the underdamped exp(-zeta (pi - 2 asin zeta) / sqrt(1 - zeta^2)).
+[[nodiscard]] double overdamped_kv_restitution(double stiffness_n_per_m, double damping_ns_per_m,
+                                               double mass_kg);
 
 // how law_restitution computes the restitution of this law, for the mapping
 [[nodiscard]] std::string law_restitution_method(const ContactLaw& law);

@@ -18,7 +18,11 @@ void bind_settings(SettingsBinder& binder, Box2dSettings* s) {
       .choice("mode", &s->mode, {"native", "inject"},
               "native = Box2D's collision and rigid contact, restitution set in PreSolve from "
               "the law at the contact's onset (default); inject = the case's force law applied "
-              "with b2Body::ApplyForce at the adapter's contact geometry");
+              "with b2Body::ApplyForce at the adapter's contact geometry")
+      .choice("reported_force", &s->reported_force, {"auto", "step", "interval"},
+              "contacts table force: step = the last step's impulse / dt; interval = the "
+              "impulse over the output interval / its length (the mean force); auto = interval "
+              "for cases with contact groups, step otherwise (default)");
 }
 
 }  // namespace pb::internal::box2d

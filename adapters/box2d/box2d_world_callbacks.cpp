@@ -12,32 +12,12 @@
 
 namespace pb::internal::box2d {
 
-void PairTable::reset(int bodies) {
-  bodies_ = bodies;
-  table_.assign(static_cast<std::size_t>(bodies) * static_cast<std::size_t>(bodies), -1);
-}
-
-void PairTable::set(int body_a, int body_b, int pair) {
-  table_[index(body_a, body_b)] = pair;
-  table_[index(body_b, body_a)] = pair;
-}
-
-std::size_t PairTable::index(int body_a, int body_b) const {
-  return static_cast<std::size_t>(body_a) * static_cast<std::size_t>(bodies_) +
-         static_cast<std::size_t>(body_b);
-}
-
-int PairTable::pair(int body_a, int body_b) const {
-  if (body_a < 0 || body_b < 0 || body_a >= bodies_ || body_b >= bodies_) return -1;
-  return table_[index(body_a, body_b)];
-}
-
 int body_index(b2Fixture& fixture) {
   return static_cast<int>(fixture.GetUserData().pointer) - 1;
 }
 
 bool PairContactFilter::ShouldCollide(b2Fixture* fixture_a, b2Fixture* fixture_b) {
-  return enabled_ && pairs_.pair(body_index(*fixture_a), body_index(*fixture_b)) >= 0;
+  return enabled_ && pairs_.may_touch(body_index(*fixture_a), body_index(*fixture_b));
 }
 
 void PairContactListener::PreSolve(b2Contact* contact, const b2Manifold* old_manifold) {
@@ -45,10 +25,15 @@ void PairContactListener::PreSolve(b2Contact* contact, const b2Manifold* old_man
   if (old_manifold->pointCount > 0) return;
   const int ia = body_index(*contact->GetFixtureA());
   const int ib = body_index(*contact->GetFixtureB());
-  const int k = pairs_.pair(ia, ib);
+  const int k = pairs_.find_or_add(ia, ib);
   if (k < 0) return;
-  PairState& st = states_[static_cast<std::size_t>(k)];
+  PairState& st = pairs_.state(k);
   b2Body& body_a = *contact->GetFixtureA()->GetBody();
+  b2Body& body_b = *contact->GetFixtureB()->GetBody();
+  // the pair's contacts, from the list of its body that is not static (the
+  // same contacts in the same order as the other's, box2d_world_callbacks.hpp)
+  b2Body& listed = body_a.GetType() == b2_staticBody ? body_b : body_a;
+  const b2Body* other = &listed == &body_a ? &body_b : &body_a;
   if (st.per_onset) {
     // the manifold points of every touching contact of the pair (this one's
     // is fresh, b2Contact::Update; the others were updated this step or keep
@@ -56,17 +41,15 @@ void PairContactListener::PreSolve(b2Contact* contact, const b2Manifold* old_man
     // their region (SPEC §1), along the deepest point's normal from the case
     // pair's body a to b
     const BodyState sa = body_state(body_a);
-    const BodyState sb = body_state(*contact->GetFixtureB()->GetBody());
+    const BodyState sb = body_state(body_b);
     int points = 0;
     double deepest = -std::numeric_limits<double>::infinity();
     Vec2 normal = Vec2::Zero();
     double approach = 0.0;  // m/s, the largest normal approach speed among the points
-    for (b2ContactEdge* e = body_a.GetContactList(); e != nullptr; e = e->next) {
+    for (b2ContactEdge* e = listed.GetContactList(); e != nullptr; e = e->next) {
       b2Contact* c = e->contact;
-      if (!c->IsTouching()) continue;
+      if (e->other != other || !c->IsTouching()) continue;
       const int ca = body_index(*c->GetFixtureA());
-      const int cb = body_index(*c->GetFixtureB());
-      if (pairs_.pair(ca, cb) != k) continue;
       b2WorldManifold wm;
       c->GetWorldManifold(&wm);
       // the manifold normal points from fixture A to fixture B
@@ -100,12 +83,9 @@ void PairContactListener::PreSolve(b2Contact* contact, const b2Manifold* old_man
       double hi_depth = 0.0;  // m
       double lo_s = std::numeric_limits<double>::infinity();
       double hi_s = -std::numeric_limits<double>::infinity();
-      for (b2ContactEdge* e = body_a.GetContactList(); e != nullptr; e = e->next) {
+      for (b2ContactEdge* e = listed.GetContactList(); e != nullptr; e = e->next) {
         b2Contact* c = e->contact;
-        if (!c->IsTouching()) continue;
-        if (pairs_.pair(body_index(*c->GetFixtureA()), body_index(*c->GetFixtureB())) != k) {
-          continue;
-        }
+        if (e->other != other || !c->IsTouching()) continue;
         b2WorldManifold wm;
         c->GetWorldManifold(&wm);
         for (int i = 0; i < c->GetManifold()->pointCount; ++i) {
@@ -152,10 +132,9 @@ void PairContactListener::PreSolve(b2Contact* contact, const b2Manifold* old_man
     }
   }
   // the same restitution on every touching contact of the pair
-  for (b2ContactEdge* e = body_a.GetContactList(); e != nullptr; e = e->next) {
+  for (b2ContactEdge* e = listed.GetContactList(); e != nullptr; e = e->next) {
     b2Contact* c = e->contact;
-    if (c != contact && !c->IsTouching()) continue;
-    if (pairs_.pair(body_index(*c->GetFixtureA()), body_index(*c->GetFixtureB())) != k) continue;
+    if (e->other != other || (c != contact && !c->IsTouching())) continue;
     c->SetRestitution(static_cast<float>(st.restitution));
     c->SetRestitutionThreshold(static_cast<float>(st.threshold_mps));
     c->SetFriction(st.friction);
@@ -163,17 +142,24 @@ void PairContactListener::PreSolve(b2Contact* contact, const b2Manifold* old_man
 }
 
 void PairContactListener::PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) {
+  // its first PreSolve gave the pair its index
   const int k =
-      pairs_.pair(body_index(*contact->GetFixtureA()), body_index(*contact->GetFixtureB()));
+      pairs_.find(body_index(*contact->GetFixtureA()), body_index(*contact->GetFixtureB()));
   if (k < 0) return;
+  PairState& st = pairs_.state(k);
+  if (st.impulse_step != pairs_.step) {
+    st.impulse_step = pairs_.step;
+    st.step_impulse_ns = 0.0;
+    st.step_tangent_impulse_ns = 0.0;
+  }
   double sum = 0.0;
   double tangent = 0.0;
   for (int i = 0; i < impulse->count; ++i) {
     sum += static_cast<double>(impulse->normalImpulses[i]);
     tangent += static_cast<double>(impulse->tangentImpulses[i]);
   }
-  states_[static_cast<std::size_t>(k)].step_impulse_ns += sum;
-  states_[static_cast<std::size_t>(k)].step_tangent_impulse_ns -= tangent;
+  st.step_impulse_ns += sum;
+  st.step_tangent_impulse_ns -= tangent;
 }
 
 }  // namespace pb::internal::box2d

@@ -1,60 +1,37 @@
-// The adapter's hooks into b2World: which fixtures may collide (only the
-// case's contact pairs), the restitution of each contact as it begins, and
-// the normal impulses the solver applied (b2ContactListener::PostSolve).
+// The adapter's hooks into b2World: which fixtures may collide (those of
+// bodies some rule of the case lets touch: a declared pair or a contact
+// group), the restitution of each contact as it begins, and the normal
+// impulses the solver applied (b2ContactListener::PostSolve).
 #pragma once
 
 #include <box2d/b2_world_callbacks.h>
 
 #include <vector>
 
+#include "box2d_pair_book.hpp"
 #include "box2d_restitution.hpp"
 #include "planarbench/case.hpp"
 
 namespace pb::internal::box2d {
 
-// index of the case contact pair of two bodies (either order), -1 if none
-class PairTable {
- public:
-  void reset(int bodies);
-  void set(int body_a, int body_b, int pair);
-  [[nodiscard]] int pair(int body_a, int body_b) const;
-
- private:
-  [[nodiscard]] std::size_t index(int body_a, int body_b) const;
-  int bodies_ = 0;
-  std::vector<int> table_;  // bodies_ x bodies_
-};
-
 // case body index stored in b2FixtureUserData::pointer (+1; 0 = none)
 [[nodiscard]] int body_index(b2Fixture& fixture);
 
-// Only fixtures of bodies that form a case contact pair collide, and none in
-// the force-injection mode (the adapter applies the contact force itself).
+// Only fixtures of bodies that some rule lets touch collide (ContactPairs::
+// may_touch: a declared pair, or two bodies of one contact group), and none
+// in the force-injection mode (the adapter applies the contact force
+// itself). Box2D asks when its broad phase first finds two fixtures' fat
+// AABBs overlapping (b2ContactManager::AddPair), so the filter costs what
+// Box2D's new proxy pairs cost, never a pass over the pairs that could touch.
 class PairContactFilter final : public b2ContactFilter {
  public:
-  PairContactFilter(const PairTable& pairs, const bool& enabled)
+  PairContactFilter(const PairBook& pairs, const bool& enabled)
       : pairs_(pairs), enabled_(enabled) {}
   bool ShouldCollide(b2Fixture* fixture_a, b2Fixture* fixture_b) override;
 
  private:
-  const PairTable& pairs_;
+  const PairBook& pairs_;
   const bool& enabled_;
-};
-
-// per contact pair, what the listener needs and what it found
-struct PairState {
-  ContactLaw law;
-  bool per_onset = false;      // restitution recomputed at each onset (depends on m_eff)
-  double restitution = 0.0;    // the value set on the pair's contacts (last computed)
-  double threshold_mps = 1.0;  // m/s, restitution velocity threshold
-  float friction = 0.0f;       // the pair's Coulomb coefficient (SPEC §7), set per contact
-  double step_impulse_ns =
-      0.0;  // N s, normal impulses of the current step (all points, TOI included)
-  // N s, the step's tangent impulses on the case's body_b along t = n rotated
-  // by +90 deg (issue 32): Box2D's tangent is b2Cross(normal, 1) = (n.y, -n.x)
-  // for its normal from fixture A to B, its impulse acts on B; whichever
-  // fixture is body_b, that is minus the sum of tangentImpulses
-  double step_tangent_impulse_ns = 0.0;
 };
 
 // the restitution a pair's contacts took at an onset (one per pair and step)
@@ -76,13 +53,18 @@ struct OnsetRecord {
 // mean of its two end points along the surface), whose effective mass
 // 1 / (J M^-1 J^T) along the deepest point's normal and the largest normal
 // approach speed among the points give the law's restitution; the value
-// goes to every touching contact of the pair. Sums the solver's normal
-// impulses per pair.
+// goes to every touching contact of the pair. A group pair gets its index
+// (PairBook::find_or_add) at its first onset. The pair's other contacts are
+// read from the contact list of its body that is not static (a ground's
+// list holds every body resting on it: O(N) per onset in a pile), which
+// holds them in the same order (b2ContactManager::AddPair prepends each
+// contact to both bodies' lists). Sums the solver's normal impulses per pair
+// and step.
 class PairContactListener final : public b2ContactListener {
  public:
-  PairContactListener(const PairTable& pairs, std::vector<PairState>& states,
-                      const std::vector<BodyInertia>& inertia, const double& time_s)
-      : pairs_(pairs), states_(states), inertia_(inertia), time_s_(time_s) {}
+  PairContactListener(PairBook& pairs, const std::vector<BodyInertia>& inertia,
+                      const double& time_s)
+      : pairs_(pairs), inertia_(inertia), time_s_(time_s) {}
 
   void PreSolve(b2Contact* contact, const b2Manifold* old_manifold) override;
   void PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) override;
@@ -92,8 +74,7 @@ class PairContactListener final : public b2ContactListener {
   [[nodiscard]] long unlogged() const { return unlogged_; }
 
  private:
-  const PairTable& pairs_;
-  std::vector<PairState>& states_;
+  PairBook& pairs_;
   const std::vector<BodyInertia>& inertia_;  // per case body; centre and pivot are t = 0 values
 
   const double& time_s_;

@@ -88,6 +88,51 @@ nlohmann::json describe_bodies(const Case& case_, const MujocoPlan& plan_) {
   return out;
 }
 
+nlohmann::json describe_groups(const Case& c, const MujocoPlan& plan,
+                               const std::vector<double>& solimp, nlohmann::json& lost,
+                               MujocoLine line) {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t g = 0; g < c.contact_groups.size(); ++g) {
+    const ContactGroup& group = c.contact_groups[g];
+    const GroupPlan& gp = plan.groups[g];
+    nlohmann::json j = native_pair_json(group.law);
+    j["name"] = group.name;
+    j["bodies"] = group.bodies.size();
+    j["found_by"] =
+        "MuJoCo's own broad phase (mj_collision: sweep and prune over the bodies' boxes, then "
+        "each geom pair whose contype and conaffinity share a bit, then its collider); each "
+        "pair of the group joins the run's pairs when MuJoCo first reports a contact of it";
+    j["geoms"] = fmt::format(
+        "one copy of each member's geoms with contype = conaffinity = {} (bit {}), condim {}{}, "
+        "solref 0 0 (set per contact by the rule), solimp as the pairs', margin = gap as below "
+        "(MuJoCo mixes two geoms by max, min and mean: equal attributes give the group's own)",
+        1u << gp.bit, gp.bit, gp.condim,
+        gp.condim > 1 ? fmt::format(", friction {} {} {} (mu on both tangents)", gp.friction[0],
+                                    gp.friction[1], gp.friction[2])
+                      : "");
+    j["solimp"] = solimp;
+    // the margins of the group's geom types (each copy's, GroupPlan)
+    nlohmann::json margins = nlohmann::json::object();
+    bool mpr = false;
+    for (const int i : group.bodies) {
+      const BodyPlan& bp = plan.bodies[static_cast<std::size_t>(i)];
+      const int copy = bp.copy_of_group(static_cast<int>(g));
+      margins[geom_type_name(bp.geom)] = bp.copy_margin_m[static_cast<std::size_t>(copy)];
+      mpr = mpr || bp.copy_margin_m[static_cast<std::size_t>(copy)] == 0.0;
+    }
+    j["margin_m"] = margins;
+    if (group.has_friction()) j["friction_coefficient"] = group.friction;
+    out.push_back(j);
+    if (mpr) {
+      lost.push_back(fmt::format(
+          "group '{}': geom types that meet an MPR partner in the group get margin 0 (a margin "
+          "spoils {}'s depth), so their exact pairs' onsets are resolved to one step",
+          group.name, line == MujocoLine::v3 ? "the native convex collider" : "libccd MPR"));
+    }
+  }
+  return out;
+}
+
 void describe_pair(const Case& c, const MujocoPlan& plan, std::size_t k, const PairParams& p,
                    bool inject, nlohmann::json& j, nlohmann::json& lost, MujocoLine line) {
   const ContactPair& cp = c.contacts[k];

@@ -23,6 +23,14 @@ void add_soft_contact_notes(double d, nlohmann::json& lost);
 // each case body: shape, MuJoCo geom(s), joints, inertial
 [[nodiscard]] nlohmann::json describe_bodies(const Case& c, const MujocoPlan& plan);
 
+// each contact group: its members, collision bit, condim, friction, the
+// margins its geom types get, solimp, and what native mode makes of its law
+// (`solimp`: the groups' geoms')
+[[nodiscard]] nlohmann::json describe_groups(const Case& c, const MujocoPlan& plan,
+                                             const std::vector<double>& solimp,
+                                             nlohmann::json& lost,
+                                             MujocoLine line = MujocoLine::v2);
+
 // pair k's names, collider, condim, margin and gap (`p`), solimp unless
 // `inject`; an MPR pair's depth caveat goes to `lost` (2.2.2's libccd MPR;
 // 3.3.8's native convex collider)

@@ -15,10 +15,12 @@
 #include <fmt/format.h>
 #include <mujoco/mujoco.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
 
+#include "mujoco_capacity.hpp"
 #include "mujoco_contact_mapping.hpp"
 #include "mujoco_description.hpp"
 #include "mujoco_exact_depth.hpp"
@@ -109,6 +111,8 @@ class MujocoEngine final : public Engine {
 
   Case case_;
   MujocoPlan plan_;  // the case's MuJoCo form, decided once per build
+  ContactCapacity capacity_;  // <size nconmax njmax>
+  bool multiccd_ = false;     // <flag multiccd> (mujoco.multiccd)
   double dt_s_ = 1e-4;
   bool inject_ = false;
   bool oracle_ = false;
@@ -122,6 +126,7 @@ class MujocoEngine final : public Engine {
   WarningWatch watch_;
   std::optional<PairSampler> sampler_;  // observations, episodes, depth checks
   long steps_ = 0;
+  int most_solver_iterations_ = 0;  // mjData::solver_iter, the most of one step
   bool forward_current_ = false;  // mj_forward ran at the current state
   bool sampled_ = false;          // the current state was sampled
   // the reason of the warning that ended the run ("" while none did): MuJoCo
@@ -143,6 +148,17 @@ MjcfOptions MujocoEngine::base_options() const {
   o.cone = settings_.cone;
   o.impratio = settings_.impratio;
   o.noslip_iterations = settings_.noslip_iterations;
+  o.nconmax = capacity_.nconmax;
+  o.njmax = capacity_.njmax;
+  o.multiccd = multiccd_;
+  // a group's geoms: the direct form without a spring, set per contact by
+  // the rule once pressed (native mode; the other modes refuse groups)
+  for (std::size_t g = 0; g < case_.contact_groups.size(); ++g) {
+    PairParams p;
+    p.solref = {0.0, 0.0};
+    for (std::size_t i = 0; i < 5; ++i) p.solimp[i] = settings_.solimp[i];
+    o.groups.push_back(p);
+  }
   return o;
 }
 
@@ -234,10 +250,21 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
   if (cap.support == Support::unsupported) {
     throw EngineError("mujoco: cannot run case '" + c.name + "': " + cap.reason);
   }
+  if (c.has_contact_groups() && settings_.integrator == "RK4") {
+    throw EngineError(
+        "mujoco: cannot run case '" + c.name +
+        "' with mujoco.integrator=RK4: RK4's stages collide again and a contact group's "
+        "contacts then take their geoms' solref, not the rule's per-pair one (a declared "
+        "<pair> keeps it in m->pair_solref); use Euler");
+  }
   case_ = c;
   plan_ = plan_mujoco(case_, settings_.detection_margin_m);
+  multiccd_ = settings_.multiccd == "on" ||
+              (settings_.multiccd == "auto" && group_meshes_meet(case_, plan_));
+  capacity_ = contact_capacity(case_, plan_, settings_, model_dofs(case_, plan_), multiccd_);
   dt_s_ = settings_.dt_s;
   steps_ = 0;
+  most_solver_iterations_ = 0;
   probe_steps_ = 0;
   injector_.reset();
   rule_.reset();
@@ -340,6 +367,10 @@ void MujocoEngine::build(const Case& c, const SettingsOverrides& overrides) {
       {"pairs", pairs},
       {"not_expressed", lost},
   };
+  if (capacity_.nconmax > 0 || capacity_.njmax > 0) mapping_["capacity"] = capacity_.json();
+  if (case_.has_contact_groups()) {
+    mapping_["groups"] = describe_groups(case_, plan_, settings_.solimp, mapping_["not_expressed"]);
+  }
 
   std::optional<ForceInjector::Scope> scope;
   if (injector_) scope.emplace(*injector_);
@@ -358,6 +389,7 @@ void MujocoEngine::ensure_current() {
       forward_checked(m, d, nullptr, nullptr, stiff);
     }
     check_warnings();
+    most_solver_iterations_ = std::max(most_solver_iterations_, d->solver_iter);
     forward_current_ = true;
   }
   if (!sampled_) {
@@ -377,6 +409,15 @@ void MujocoEngine::check_warnings() {
       continue;
     }
     fault_ = fault_reason(case_, layout_, w, time(), last_warning_text());
+    if (w.warning == mjWARN_CONTACTFULL || w.warning == mjWARN_CNSTRFULL) {
+      // the capacity is the adapter's (mujoco_capacity.hpp): say how to raise it
+      fault_ += fmt::format(
+          "; this run's capacity: nconmax {}, njmax {} ({}); mujoco.nconmax and mujoco.njmax "
+          "set them, at {:.3g} bytes of mjData per row (njmax x nv and njmax^2 arrays)",
+          model_->nconmax, model_->njmax, capacity_.rule,
+          capacity_bytes(model_->nconmax, model_->njmax + 1, model_->nv) -
+              capacity_bytes(model_->nconmax, model_->njmax, model_->nv));
+    }
     throw EngineError(fault_);
   }
 }
@@ -461,6 +502,16 @@ nlohmann::json MujocoEngine::extra_attributes() const {
                      {"first_time_s", noted_first_s_[k]}});
   }
   if (!noted.empty()) j["mujoco_warnings_noted"] = noted;
+  if (data_ && case_.has_contact_groups()) {
+    // the capacity the run had and the most of it MuJoCo used in one step
+    j["mujoco_capacity"] = {{"nconmax", model_->nconmax},
+                            {"njmax", model_->njmax},
+                            {"most_contacts", data_->maxuse_con},
+                            {"most_rows", data_->maxuse_efc},
+                            {"most_solver_iterations", most_solver_iterations_},
+                            {"group_pairs_found", layout_.pairs.size() -
+                                                      static_cast<std::size_t>(layout_.declared())}};
+  }
   return j;
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
 
@@ -31,36 +32,66 @@ Vec2 rotated(const Vec2& v, double theta) {
   return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
 }
 
-// the geoms of body i (one per piece), placed at `pos` with orientation `q`
-// in its parent
+std::string reals(const double* v, std::size_t n) {
+  std::string s;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k) s.append(" ");
+    s.append(num(v[k]));
+  }
+  return s;
+}
+
+// the geoms of body i (one per piece, per copy), placed at `pos` with
+// orientation `q` in its parent
 std::string geom_elements(const Body& b, const BodyPlan& plan, int i,
-                          const std::array<double, 3>& pos, const std::array<double, 4>& q) {
-  // collisions only through explicit <pair>s: contype = conaffinity = 0
-  auto common = [&](int piece) {
-    return fmt::format(R"(name="{}" pos="{}" quat="{}" contype="0" conaffinity="0" condim="1")",
-                       geom_name(i, piece), vec3(pos), quat(q));
+                          const std::array<double, 3>& pos, const std::array<double, 4>& q,
+                          const MujocoPlan& all, const MjcfOptions& o) {
+  auto common = [&](int piece, int copy) {
+    if (plan.groups.empty()) {
+      // collisions only through explicit <pair>s: contype = conaffinity = 0
+      return fmt::format(R"(name="{}" pos="{}" quat="{}" contype="0" conaffinity="0" condim="1")",
+                         geom_name(i, piece), vec3(pos), quat(q));
+    }
+    // a copy of a group: MuJoCo's broad phase pairs it with the group's
+    // other geoms, with the group's attributes (GroupPlan)
+    const auto g = static_cast<std::size_t>(plan.groups[static_cast<std::size_t>(copy)]);
+    const GroupPlan& gp = all.groups[g];
+    const PairParams& p = o.groups[g];
+    const double margin = plan.copy_margin_m[static_cast<std::size_t>(copy)];
+    const std::string friction =
+        gp.condim > 1 ? fmt::format(R"( friction="{}")", reals(gp.friction.data(), 3)) : "";
+    return fmt::format(
+        R"(name="{}" pos="{}" quat="{}" contype="{}" conaffinity="{}" condim="{}"{} solref="{}" solimp="{}" margin="{}" gap="{}")",
+        geom_name(i, piece, copy), vec3(pos), quat(q), 1u << gp.bit, 1u << gp.bit, gp.condim,
+        friction, reals(p.solref.data(), 2), reals(p.solimp.data(), 5), num(margin), num(margin));
   };
-  return std::visit(
-      [&](const auto& s) -> std::string {
-        using T = std::decay_t<decltype(s)>;
-        if constexpr (std::is_same_v<T, Circle>) {
-          return fmt::format(R"(<geom {} type="sphere" size="{}"/>)", common(0), num(s.radius_m));
-        } else if constexpr (std::is_same_v<T, Ellipse>) {
-          return fmt::format(R"(<geom {} type="ellipsoid" size="{}"/>)", common(0),
-                             vec3(ellipsoid_size_m(s)));
-        } else if constexpr (std::is_same_v<T, Polygon>) {
-          std::string out;
-          for (int k = 0; k < plan.geom_count(); ++k) {
-            out += fmt::format(R"(<geom {} type="mesh" mesh="{}"/>)", common(k), mesh_name(i, k));
+  std::string out;
+  for (int copy = 0; copy < plan.copy_count(); ++copy) {
+    out += std::visit(
+        [&](const auto& s) -> std::string {
+          using T = std::decay_t<decltype(s)>;
+          if constexpr (std::is_same_v<T, Circle>) {
+            return fmt::format(R"(<geom {} type="sphere" size="{}"/>)", common(0, copy),
+                               num(s.radius_m));
+          } else if constexpr (std::is_same_v<T, Ellipse>) {
+            return fmt::format(R"(<geom {} type="ellipsoid" size="{}"/>)", common(0, copy),
+                               vec3(ellipsoid_size_m(s)));
+          } else if constexpr (std::is_same_v<T, Polygon>) {
+            std::string geoms;
+            for (int k = 0; k < plan.geom_count(); ++k) {
+              geoms += fmt::format(R"(<geom {} type="mesh" mesh="{}"/>)", common(k, copy),
+                                   mesh_name(i, k));
+            }
+            return geoms;
+          } else {
+            // size only affects rendering: MuJoCo planes are infinite for collision
+            return fmt::format(R"(<geom {} type="plane" size="{} 1 1"/>)", common(0, copy),
+                               num(0.5 * s.extent_m));
           }
-          return out;
-        } else {
-          // size only affects rendering: MuJoCo planes are infinite for collision
-          return fmt::format(R"(<geom {} type="plane" size="{} 1 1"/>)", common(0),
-                             num(0.5 * s.extent_m));
-        }
-      },
-      b.shape);
+        },
+        b.shape);
+  }
+  return out;
 }
 
 // one mesh asset per convex piece: a bipyramid over the plan's apex
@@ -87,7 +118,8 @@ std::string inertial_element(const Body& b, const std::array<double, 3>& pos) {
                      num(b.mass_kg), inertia, inertia, inertia);
 }
 
-std::string moving_body(const Case& c, const BodyPlan& plan, int i) {
+std::string moving_body(const Case& c, const BodyPlan& plan, int i, const MujocoPlan& all,
+                        const MjcfOptions& o) {
   const Body& b = c.bodies[static_cast<std::size_t>(i)];
   const int j = plan.joint;
   const std::array<double, 4> identity = {1.0, 0.0, 0.0, 0.0};
@@ -99,7 +131,7 @@ std::string moving_body(const Case& c, const BodyPlan& plan, int i) {
     s += fmt::format(R"(<joint name="{}" type="slide" axis="0 0 1"/>)", slide_z_name(i));
     s += fmt::format(R"(<joint name="{}" type="hinge" axis="0 1 0"/>)", hinge_name(i));
     s += inertial_element(b, {0.0, 0.0, 0.0});
-    s += geom_elements(b, plan, i, {0.0, 0.0, 0.0}, identity);
+    s += geom_elements(b, plan, i, {0.0, 0.0, 0.0}, identity, all, o);
   } else {
     // pendulum: frame origin at the pivot; centre of mass at -pivot_in_body
     // in the reference pose (angle 0)
@@ -108,19 +140,18 @@ std::string moving_body(const Case& c, const BodyPlan& plan, int i) {
     s += fmt::format(R"(<body name="{}" pos="{}">)", body_name(i), vec3(to_mj(rj.anchor_world_m)));
     s += fmt::format(R"(<joint name="{}" type="hinge" axis="0 1 0"/>)", hinge_name(i));
     s += inertial_element(b, com);
-    s += geom_elements(b, plan, i, com, identity);
+    s += geom_elements(b, plan, i, com, identity, all, o);
   }
   s += "</body>\n";
   return s;
 }
 
-std::string reals(const double* v, std::size_t n) {
-  std::string s;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (k) s.append(" ");
-    s.append(num(v[k]));
+// the group both bodies are in (the loader allows one at most), -1 if none
+int shared_group(const BodyPlan& a, const BodyPlan& b) {
+  for (const int g : a.groups) {
+    if (std::find(b.groups.begin(), b.groups.end(), g) != b.groups.end()) return g;
   }
-  return s;
+  return -1;
 }
 
 }  // namespace
@@ -128,8 +159,9 @@ std::string reals(const double* v, std::size_t n) {
 std::string body_name(int i) {
   return fmt::format("body{}", i);
 }
-std::string geom_name(int i, int piece) {
-  return piece == 0 ? fmt::format("geom{}", i) : fmt::format("geom{}_{}", i, piece);
+std::string geom_name(int i, int piece, int copy) {
+  const std::string base = copy == 0 ? fmt::format("geom{}", i) : fmt::format("geom{}c{}", i, copy);
+  return piece == 0 ? base : fmt::format("{}_{}", base, piece);
 }
 std::string mesh_name(int i, int piece) {
   return piece == 0 ? fmt::format("mesh{}", i) : fmt::format("mesh{}_{}", i, piece);
@@ -162,8 +194,10 @@ Vec2 pivot_in_body_m(const Case& c, const RevoluteJoint& j) {
 
 std::string write_mjcf(const Case& c, const MujocoPlan& plan, const MjcfOptions& o) {
   if (o.pairs.size() != c.contacts.size() || plan.pairs.size() != c.contacts.size() ||
-      plan.bodies.size() != c.bodies.size()) {
-    throw EngineError("mujoco: write_mjcf needs the case's plan and one PairParams per pair");
+      plan.bodies.size() != c.bodies.size() || o.groups.size() != c.contact_groups.size() ||
+      plan.groups.size() != c.contact_groups.size()) {
+    throw EngineError(
+        "mujoco: write_mjcf needs the case's plan and one PairParams per pair and group");
   }
   const bool own_friction_solref = o.solreffriction[0] != 0.0 || o.solreffriction[1] != 0.0;
   if (o.mujoco_major < 3 &&
@@ -182,12 +216,13 @@ std::string write_mjcf(const Case& c, const MujocoPlan& plan, const MjcfOptions&
     assets += mesh_assets(bp, id);
     if (b.fixed) {
       // fixed bodies are geoms of the world body at their pose
-      world += geom_elements(b, bp, id, to_mj(b.position_m), quat_from_ccw(b.angle_rad)) + "\n";
+      world += geom_elements(b, bp, id, to_mj(b.position_m), quat_from_ccw(b.angle_rad), plan, o) +
+               "\n";
     } else {
       if (std::holds_alternative<HalfPlane>(b.shape)) {
         throw EngineError(fmt::format("mujoco: half-plane '{}' must be fixed", b.name));
       }
-      world += moving_body(c, bp, id);
+      world += moving_body(c, bp, id, plan, o);
     }
   }
   std::string pairs;
@@ -203,26 +238,43 @@ std::string write_mjcf(const Case& c, const MujocoPlan& plan, const MjcfOptions&
     if (pp.condim > 1 && own_friction_solref) {
       friction += fmt::format(R"( solreffriction="{}")", reals(o.solreffriction.data(), 2));
     }
-    // every piece of a against every piece of b, with the case pair's parameters
-    const int na = plan.bodies[static_cast<std::size_t>(cp.body_a)].geom_count();
-    const int nb = plan.bodies[static_cast<std::size_t>(cp.body_b)].geom_count();
+    // every piece of a against every piece of b, with the case pair's
+    // parameters; on the copies of a group both bodies are in, if any: MuJoCo
+    // then skips the geom pairs its broad phase finds that a <pair> names
+    // (mj_collision's merge), so the declared pair takes precedence
+    const BodyPlan& ba = plan.bodies[static_cast<std::size_t>(cp.body_a)];
+    const BodyPlan& bb = plan.bodies[static_cast<std::size_t>(cp.body_b)];
+    const int shared = shared_group(ba, bb);
+    const int ca = shared < 0 ? 0 : ba.copy_of_group(shared);
+    const int cb = shared < 0 ? 0 : bb.copy_of_group(shared);
+    const int na = ba.geom_count();
+    const int nb = bb.geom_count();
     for (int pa = 0; pa < na; ++pa) {
       for (int pb = 0; pb < nb; ++pb) {
         pairs += fmt::format(
             R"(<pair name="{}" geom1="{}" geom2="{}" condim="{}"{} solref="{}" solimp="{}" margin="{}" gap="{}"/>)",
-            pair_name(static_cast<int>(k), pa, pb), geom_name(cp.body_a, pa),
-            geom_name(cp.body_b, pb), pp.condim, friction, reals(p.solref.data(), 2),
+            pair_name(static_cast<int>(k), pa, pb), geom_name(cp.body_a, pa, ca),
+            geom_name(cp.body_b, pb, cb), pp.condim, friction, reals(p.solref.data(), 2),
             reals(p.solimp.data(), 5), num(pp.margin_m), num(p.gap_m));
         pairs += "\n";
       }
     }
   }
   const auto g = to_mj(c.gravity_mps2);
+  std::string size;
+  const int memory_mb = o.mujoco_major >= 3 ? o.memory_mb : 0;
+  if (o.nconmax > 0 || o.njmax > 0 || memory_mb > 0) {
+    size = "<size";
+    if (o.nconmax > 0) size += fmt::format(R"( nconmax="{}")", o.nconmax);
+    if (o.njmax > 0) size += fmt::format(R"( njmax="{}")", o.njmax);
+    if (memory_mb > 0) size += fmt::format(R"( memory="{}M")", memory_mb);
+    size += "/>\n";
+  }
   return fmt::format(
       R"(<mujoco model="{}">
 <compiler angle="radian" inertiafromgeom="false"/>
-<option timestep="{}" integrator="{}" solver="{}" iterations="{}" tolerance="{}" gravity="{}" cone="{}" impratio="{}" noslip_iterations="{}"/>
-<asset>
+<option timestep="{}" integrator="{}" solver="{}" iterations="{}" tolerance="{}" gravity="{}" cone="{}" impratio="{}" noslip_iterations="{}"{}
+{}<asset>
 {}</asset>
 <worldbody>
 {}</worldbody>
@@ -231,7 +283,8 @@ std::string write_mjcf(const Case& c, const MujocoPlan& plan, const MjcfOptions&
 </mujoco>
 )",
       "planarbench", num(o.dt_s), o.integrator, o.solver, o.iterations, num(o.tolerance), vec3(g),
-      o.cone, num(o.impratio), o.noslip_iterations, assets, world, pairs);
+      o.cone, num(o.impratio), o.noslip_iterations,
+      o.multiccd ? R"(><flag multiccd="enable"/></option>)" : "/>", size, assets, world, pairs);
 }
 
 }  // namespace pb::internal::mujoco

@@ -1,6 +1,9 @@
 // MJCF text of a case: one MuJoCo body per moving case body, one geom per
 // body (one per convex piece of a non-convex polygon), one explicit <pair>
-// per case contact pair (per two pieces), everything else unable to collide.
+// per declared case contact pair (per two pieces); the bodies of a contact
+// group collide by MuJoCo's own broad phase through their group's collision
+// bit (one copy of a body's geoms per group it is in, mujoco_plan.hpp);
+// everything else unable to collide.
 // Written from the pb::Case and its MujocoPlan (mujoco_plan.hpp): no code
 // path per case, and no geometry decided here.
 #pragma once
@@ -34,6 +37,19 @@ struct MjcfOptions {
   double impratio = 1.0;
   int noslip_iterations = 0;
   std::vector<PairParams> pairs;  // index = Case::contacts index
+  // index = Case::contact_groups index: the solref and solimp of the group's
+  // geoms (its gap is each copy's margin, GroupPlan: active below distance 0)
+  std::vector<PairParams> groups;
+  // <size nconmax njmax> (MuJoCo 2.2.2's fixed contact and constraint
+  // capacity; mujoco_capacity.hpp); 0: not written (MuJoCo's defaults, 100
+  // and 500, and for MuJoCo 3 its default arena)
+  int nconmax = 0;
+  int njmax = 0;
+  // MuJoCo 3 only: <size memory="NM"> (its arena, MB); 0: not written
+  int memory_mb = 0;
+  // <flag multiccd="enable">: MuJoCo's convex-convex collider (mesh-mesh)
+  // reports several contacts of a flat contact, not one (mujoco_settings.hpp)
+  bool multiccd = false;
   // the MuJoCo the text is for: 2 (2.2.2) or 3 (3.3.8). What 3 reads that 2
   // refuses: solreffriction on a <pair> (2.3.6 on) and the integrators
   // "implicit" (2.3.0) and "implicitfast" (2.3.3); the writer refuses them
@@ -48,7 +64,7 @@ struct MjcfOptions {
 // convex pieces has one geom (and mesh) per piece, and a case pair one
 // MuJoCo <pair> per two pieces (piece 0 keeps the plain names)
 [[nodiscard]] std::string body_name(int i);
-[[nodiscard]] std::string geom_name(int i, int piece = 0);
+[[nodiscard]] std::string geom_name(int i, int piece = 0, int copy = 0);
 [[nodiscard]] std::string mesh_name(int i, int piece = 0);
 [[nodiscard]] std::string pair_name(int k, int piece_a = 0, int piece_b = 0);
 [[nodiscard]] std::string slide_x_name(int i);

@@ -45,16 +45,46 @@ ModelPtr load_mjcf(const std::string& xml) {
   return ModelPtr(m);
 }
 
-int ModelLayout::pair_of(int geom1, int geom2) const {
-  const auto g = body_of_geom.size();
+namespace {
+
+// the case bodies of two geoms, false when either is none of the case's
+bool bodies_of(const ModelLayout& L, int geom1, int geom2, int& a, int& b) {
+  const auto g = L.body_of_geom.size();
   if (geom1 < 0 || geom2 < 0 || static_cast<std::size_t>(geom1) >= g ||
       static_cast<std::size_t>(geom2) >= g) {
-    return -1;
+    return false;
   }
-  const int a = body_of_geom[static_cast<std::size_t>(geom1)];
-  const int b = body_of_geom[static_cast<std::size_t>(geom2)];
-  if (a < 0 || b < 0) return -1;
-  return pair_table[static_cast<std::size_t>(a) * bodies.size() + static_cast<std::size_t>(b)];
+  a = L.body_of_geom[static_cast<std::size_t>(geom1)];
+  b = L.body_of_geom[static_cast<std::size_t>(geom2)];
+  return a >= 0 && b >= 0 && a != b;
+}
+
+}  // namespace
+
+int ModelLayout::pair_of(int geom1, int geom2) const {
+  int a = -1;
+  int b = -1;
+  if (!rules || !bodies_of(*this, geom1, geom2, a, b)) return -1;
+  return rules->find(a, b);
+}
+
+int ModelLayout::find_or_add_pair(int geom1, int geom2) {
+  int a = -1;
+  int b = -1;
+  if (!rules || !bodies_of(*this, geom1, geom2, a, b)) return -1;
+  const int k = rules->find_or_add(a, b);
+  if (k >= static_cast<int>(pairs.size())) {
+    // a group pair MuJoCo's broad phase has just found
+    const ContactPair& cp = (*rules)[k];
+    PairLayout p;
+    p.body_a = cp.body_a;
+    p.body_b = cp.body_b;
+    p.mj_body_a = bodies[static_cast<std::size_t>(cp.body_a)].mj_body;
+    p.mj_body_b = bodies[static_cast<std::size_t>(cp.body_b)].mj_body;
+    p.present = true;  // a group pair never joins two fixed bodies
+    pairs.push_back(std::move(p));
+  }
+  return k;
 }
 
 bool ModelLayout::on_body_a(int geom, int k) const {
@@ -68,11 +98,13 @@ ModelLayout model_layout(const mjModel* m, const Case& c, const MujocoPlan& plan
   for (std::size_t i = 0; i < c.bodies.size(); ++i) {
     const int id = static_cast<int>(i);
     BodyLayout b;
-    for (int piece = 0; piece < plan.bodies[i].geom_count(); ++piece) {
-      const int g = id_of(m, mjOBJ_GEOM, geom_name(id, piece));
-      if (g < 0) continue;
-      b.geoms.push_back(g);
-      L.body_of_geom[static_cast<std::size_t>(g)] = id;
+    for (int copy = 0; copy < plan.bodies[i].copy_count(); ++copy) {
+      for (int piece = 0; piece < plan.bodies[i].geom_count(); ++piece) {
+        const int g = id_of(m, mjOBJ_GEOM, geom_name(id, piece, copy));
+        if (g < 0) continue;
+        if (copy == 0) b.geoms.push_back(g);
+        L.body_of_geom[static_cast<std::size_t>(g)] = id;
+      }
     }
     b.geom = b.geoms.empty() ? -1 : b.geoms.front();
     if (!c.bodies[i].fixed) {
@@ -86,8 +118,7 @@ ModelLayout model_layout(const mjModel* m, const Case& c, const MujocoPlan& plan
     }
     L.bodies.push_back(b);
   }
-  const std::size_t n = c.bodies.size();
-  L.pair_table.assign(n * n, -1);
+  L.rules.emplace(c);
   for (std::size_t k = 0; k < c.contacts.size(); ++k) {
     const ContactPair& cp = c.contacts[k];
     PairLayout p;
@@ -109,10 +140,6 @@ ModelLayout model_layout(const mjModel* m, const Case& c, const MujocoPlan& plan
         }
       }
     }
-    L.pair_table[static_cast<std::size_t>(cp.body_a) * n + static_cast<std::size_t>(cp.body_b)] =
-        static_cast<int>(k);
-    L.pair_table[static_cast<std::size_t>(cp.body_b) * n + static_cast<std::size_t>(cp.body_a)] =
-        static_cast<int>(k);
     L.pairs.push_back(p);
   }
   return L;

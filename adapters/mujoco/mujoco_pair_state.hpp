@@ -10,21 +10,14 @@
 #include <span>
 #include <vector>
 
+#include "mujoco_contact_buckets.hpp"
 #include "mujoco_model.hpp"
 #include "planarbench/case.hpp"
 
 namespace pb::internal::mujoco {
 
-// buffers sized for one model, allocated once (the sampling loop allocates nothing)
-struct Scratch {
-  explicit Scratch(const mjModel* m);
-  std::vector<double> jac_a;     // 3 x nv, translational Jacobian of body a's point
-  std::vector<double> jac_b;     // 3 x nv
-  std::vector<double> row;       // nv, normal Jacobian n^T (J_b - J_a)
-  std::vector<double> minv_row;  // nv, M^-1 row^T
-};
-
 struct PairObservation {
+  int pair = -1;                    // the run's pair index (ModelLayout::pairs)
   bool reported = false;            // MuJoCo's collider gave at least one contact
   int deepest = -1;                 // index of the deepest contact in mjData::contact
   double penetration_m = 0.0;       // m, -dist of the deepest contact (< 0: apart, within margin)
@@ -42,10 +35,39 @@ struct PairObservation {
   int pressed = 0;       // of them, with dist < 0 (in the constraint)
 };
 
-// Reads d->contact (valid after mj_collision at the current qpos) and d->qvel.
-// Forces only when with_force: mj_contactForce (needs the constraint solve),
-// or, when `forces` is not empty, its 6 numbers per contact of d->contact
-// (mj_contactForce's, computed by another MuJoCo on the same contacts).
+// buffers sized for one model, allocated once (the sampling loop allocates nothing)
+struct Scratch {
+  explicit Scratch(const mjModel* m);
+  std::vector<double> jac_a;     // 3 x nv, translational Jacobian of body a's point
+  std::vector<double> jac_b;     // 3 x nv
+  std::vector<double> row;       // nv, normal Jacobian n^T (J_b - J_a)
+  std::vector<double> minv_row;  // nv, M^-1 row^T
+  // rows on the pair's DOFs only (mujoco_sparse_jacobian.hpp), when every
+  // moving body hangs from the world body (the models this adapter writes)
+  bool sparse = false;
+  std::vector<int> dofs;         // the DOFs of the two bodies, ascending
+  std::vector<double> pjac_a;    // 3 x dofs
+  std::vector<double> pjac_b;    // 3 x dofs
+  std::vector<int> body_dofs;    // one body's DOFs (point velocities)
+  std::vector<double> body_jac;  // 3 x body_dofs
+  // the dense observe_pairs' buckets and compact observations
+  ContactBuckets buckets;
+  std::vector<PairObservation> touched;
+};
+
+// Reads d->contact (valid after mj_collision at the current qpos) and d->qvel:
+// one observation per pair with contacts, in buckets.pairs() order (built on
+// d). Forces only when with_force: mj_contactForce (needs the constraint
+// solve), or, when `forces` is not empty, its 6 numbers per contact of
+// d->contact (mj_contactForce's, computed by another MuJoCo on the same
+// contacts).
+void observe_pairs(const mjModel* m, const mjData* d, const ModelLayout& layout,
+                   const ContactBuckets& buckets, bool with_force, Scratch& scratch,
+                   std::vector<PairObservation>& out, std::span<const double> forces = {});
+
+// The same, one observation per pair of `layout` (index = pair; not
+// reported where no contact): for runs of declared pairs only (the probe,
+// the injector).
 void observe_pairs(const mjModel* m, const mjData* d, const ModelLayout& layout, bool with_force,
                    Scratch& scratch, std::vector<PairObservation>& out,
                    std::span<const double> forces = {});
@@ -65,5 +87,10 @@ void observe_pairs(const mjModel* m, const mjData* d, const ModelLayout& layout,
 // frame), into `row` (nv entries)
 void normal_row(const mjModel* m, mjData* d, int mj_body_a, int mj_body_b, const double p[3],
                 const double n[3], Scratch& scratch, double* row);
+
+// the same row on scratch.dofs only (pair_dofs of the two bodies, set by the
+// caller; scratch.sparse): dofs.size() entries, each the dense row's
+void normal_row_on_dofs(const mjModel* m, const mjData* d, int mj_body_a, int mj_body_b,
+                        const double p[3], const double n[3], Scratch& scratch, double* row);
 
 }  // namespace pb::internal::mujoco

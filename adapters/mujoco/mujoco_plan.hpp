@@ -1,8 +1,10 @@
 // The MuJoCo form of a case, decided once per build, before any MJCF is
 // written: what each case body becomes (geom type, convex pieces and their
-// bipyramid apexes, joints) and each case pair (collider, margin, contact
-// dimension, friction). write_mjcf, model_layout and the engine read it, so
-// a polygon is decomposed once and every stage agrees on what it wrote.
+// bipyramid apexes, joints), each declared case pair (collider, margin,
+// contact dimension, friction) and each contact group (its collision bit and
+// the geom attributes MuJoCo's own broad phase mixes into a contact).
+// write_mjcf, model_layout and the engine read it, so a polygon is decomposed
+// once and every stage agrees on what it wrote.
 #pragma once
 
 #include <array>
@@ -23,9 +25,43 @@ struct BodyPlan {
   bool decomposed = false;
   std::string decomposition;  // how, when decomposed
   int joint = -1;             // the case joint of a pendulum body, -1 otherwise
+  // contact groups (SPEC §11): one copy of the body's geoms per group it is
+  // in (copy c for groups[c]), each colliding through its group's bit only
+  // and carrying its group's attributes, so that a body in two groups meets
+  // each with that group's law; a body in no group has one copy (copy 0)
+  // that collides through explicit <pair>s only. copy_margin_m[c]: m, the
+  // copy's geom margin (and gap) in its group (GroupPlan)
+  std::vector<int> groups;
+  std::vector<double> copy_margin_m;
+  // geoms of one copy (one per convex piece)
   [[nodiscard]] int geom_count() const {
     return pieces.empty() ? 1 : static_cast<int>(pieces.size());
   }
+  [[nodiscard]] int copy_count() const {
+    return groups.empty() ? 1 : static_cast<int>(groups.size());
+  }
+  // the copy of group g (0 when the body is not in it)
+  [[nodiscard]] int copy_of_group(int g) const;
+};
+
+// A contact group as geoms MuJoCo collides by itself (mj_collision's broad
+// phase, engine_collision_driver.c): every geom of the group's copies has
+// contype = conaffinity = 1 << bit, so two geoms meet iff they share a group
+// ((contype1 & conaffinity2) || (contype2 & conaffinity1)); MuJoCo mixes two
+// geoms' attributes into a contact by max (condim, friction, margin, gap),
+// min (a direct solref), or the mean (solimp): equal attributes on every
+// geom of the group give the group's own. Margin: a geom gets the detection
+// margin when every geom type it can meet in its group has an exact collider
+// (plane-*, sphere-sphere), else 0 (a margin spoils MPR's depth); the max of
+// two geoms' margins is then 0 on every MPR pair and the detection margin on
+// the exact pairs of a group without MPR partners.
+struct GroupPlan {
+  int bit = 0;  // contype = conaffinity = 1 << bit
+  int condim = 1;
+  // geom friction (sliding, torsional, rolling): mu, then MuJoCo's defaults;
+  // MuJoCo unpacks it to (mu, mu, torsional, rolling, rolling), the declared
+  // pairs' five numbers
+  std::array<double, 3> friction = {1.0, 0.005, 0.0001};
 };
 
 struct PairPlan {
@@ -48,9 +84,14 @@ struct PairPlan {
 };
 
 struct MujocoPlan {
-  std::vector<BodyPlan> bodies;  // index = Case::bodies index
-  std::vector<PairPlan> pairs;   // index = Case::contacts index
+  std::vector<BodyPlan> bodies;   // index = Case::bodies index
+  std::vector<PairPlan> pairs;    // index = Case::contacts index
+  std::vector<GroupPlan> groups;  // index = Case::contact_groups index
 };
+
+// one collision bit per group (contype, conaffinity): MuJoCo's are an int's,
+// bit 31 its sign, so 31
+inline constexpr int kMaxContactGroups = 31;
 
 // Memory: MuJoCo collides only explicit <pair>s here, one per two convex
 // pieces of a case pair: pieces_a x pieces_b. Its compiler and model take
@@ -63,7 +104,15 @@ inline constexpr long kMaxGeomPairs = 100'000;
 inline constexpr long kBytesPerGeomPair = 2900;
 
 // detection_margin_m: the margin of exact-collider pairs (mujoco.detection_margin).
-// Throws EngineError when the case needs more than kMaxGeomPairs geom pairs.
+// Throws EngineError when the case needs more than kMaxGeomPairs geom pairs
+// or kMaxContactGroups groups.
 [[nodiscard]] MujocoPlan plan_mujoco(const Case& c, double detection_margin_m);
+
+// whether a contact group lets two polygons (mesh geoms) meet, one moving
+[[nodiscard]] bool group_meshes_meet(const Case& c, const MujocoPlan& plan);
+
+// whether MuJoCo's depth of bodies a and b is checked against the exact
+// geometry (an MPR pair whose exact penetration is known: circle-ellipse)
+[[nodiscard]] bool depth_checked(const Case& c, const MujocoPlan& plan, int a, int b);
 
 }  // namespace pb::internal::mujoco

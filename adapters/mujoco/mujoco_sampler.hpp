@@ -12,6 +12,7 @@
 #include <span>
 #include <vector>
 
+#include "mujoco_contact_buckets.hpp"
 #include "mujoco_model.hpp"
 #include "mujoco_pair_state.hpp"
 #include "mujoco_plan.hpp"
@@ -30,15 +31,20 @@ class ForceInjector;
 
 class PairSampler {
  public:
-  PairSampler(const Case& c, const MujocoPlan& plan, const ModelLayout& layout);
+  // `layout` gains the group pairs MuJoCo's collider reports
+  PairSampler(const Case& c, const MujocoPlan& plan, ModelLayout& layout);
 
-  // Observes every pair at time t_s (d after the constraint solve). Forces:
-  // from mj_contactForce on d, or, when `forces` is given (6 per contact of
-  // d->contact), from those (another MuJoCo computed them); none when
-  // !with_force. With an injector, its law's force replaces MuJoCo's.
+  // Observes the pairs with contacts at time t_s (d after the constraint
+  // solve), and closes the contact of each pair reported at the sample
+  // before and not now (every other pair is apart and stays so: nothing to
+  // observe). Forces: from mj_contactForce on d, or, when `forces` is given
+  // (6 per contact of d->contact), from those (another MuJoCo computed
+  // them); none when !with_force. With an injector, its law's force
+  // replaces MuJoCo's.
   void sample(const mjModel* m, const mjData* d, double t_s, bool with_force,
               std::span<const double> forces, ForceInjector* injector);
 
+  // the pairs with contacts at the last sample, ascending pair
   [[nodiscard]] const std::vector<PairObservation>& observations() const { return obs_; }
   void contacts(std::vector<ContactSample>& out) const;
   [[nodiscard]] std::vector<ContactEpisode> episodes() const { return tracker_.episodes(); }
@@ -52,14 +58,22 @@ class PairSampler {
     double max_penetration_m = 0.0;
   };
 
+  // the per-pair vectors sized for the layout's pairs (group pairs join)
+  void grow();
+
   const Case& case_;
   const MujocoPlan& plan_;
-  const ModelLayout& layout_;
+  ModelLayout& layout_;
   std::optional<Scratch> scratch_;
+  ContactBuckets buckets_;
   std::vector<PairObservation> obs_;
+  std::vector<PairObservation> dense_;  // the injector's view: one per pair
+  std::vector<int> reported_;       // pairs reported at the last sample, ascending
+  std::vector<int> reported_now_;   // scratch
   std::vector<Vec2> last_point_m_;  // per pair: last contact point seen
   std::vector<Vec2> last_normal_;   // per pair: last normal seen (a -> b)
   std::vector<bool> seen_;
+  std::vector<bool> check_;         // per pair: MPR depth checked (depth_checked)
   std::vector<DepthCheck> depth_;
   EpisodeTracker tracker_;
 };

@@ -57,6 +57,25 @@ SettingsBinder bind_mujoco_settings(MujocoSettings& s, MujocoLine line) {
       .real("detection_margin", &s.detection_margin_m, 0.0, 1.0,
             "m, margin of exact-collider pairs, reported as inactive contacts for onset "
             "interpolation; changes no force (default 0.01; MPR pairs always use 0)");
+  b.choice("multiccd", &s.multiccd, {"auto", "on", "off"},
+           "MuJoCo's multiccd flag: several contacts of a flat mesh-mesh contact instead of one "
+           "at a support vertex; auto = on where a contact group lets two polygons meet "
+           "(default), off elsewhere");
+  b.integer("nconmax", &s.nconmax, 0, 100'000'000,
+            v3 ? "contacts the rule's MuJoCo 2.2.2 mirror holds (its <size nconmax>); 0 = the "
+                 "adapter's rule from the scene (default; mujoco_capacity.hpp)"
+               : "MuJoCo 2.2.2's contact capacity (<size nconmax>); 0 = the adapter's rule from "
+                 "the scene (default; MuJoCo's own 100 for a case without contact groups)");
+  if (!v3) {
+    b.integer("njmax", &s.njmax, 0, 100'000'000,
+              "MuJoCo 2.2.2's constraint-row capacity (<size njmax>; mjData holds njmax x nv "
+              "Jacobians and njmax^2 more); 0 = the adapter's rule from the scene (default; "
+              "MuJoCo's own 500 for a case without contact groups)");
+  } else {
+    b.integer("memory_mb", &s.memory_mb, 0, 2000,
+              "MB of MuJoCo 3's mjData arena (<size memory>: contacts, constraint rows and the "
+              "solver's stack); 0 = MuJoCo 3's own default, its heuristic from nv (default)");
+  }
   if (v3) {
     b.choice("mode", &s.mode, {"native"},
              "native = MuJoCo's collision and soft contact, solref set each step from the law "

@@ -58,6 +58,26 @@ struct MujocoSettings {
   // (mjContact::solreffriction, <pair solreffriction>, MuJoCo 2.3.6 on);
   // [0, 0] = MuJoCo's default, the friction rows take the contact's solref
   std::vector<double> solreffriction = {0.0, 0.0};
+  // MuJoCo 2.2.2's contact and constraint capacity (<size nconmax njmax>:
+  // compiled-in 100 and 500 unless the model states them; mjData is sized
+  // for them once, njmax x nv Jacobians and njmax^2 included). 0 = the
+  // adapter's rule from the scene (mujoco_capacity.hpp); a case without
+  // contact groups keeps MuJoCo's defaults unless these are set
+  int nconmax = 0;
+  int njmax = 0;
+  // MuJoCo's multiccd flag (<option><flag multiccd>): its convex-convex
+  // collider (mesh-mesh: two polygons) gives one contact per geom pair, at a
+  // support vertex, which cannot hold a flat face (MuJoCo's documentation:
+  // "instabilities that typically manifest as sliding or wobbling"); with
+  // the flag it looks for more by turning the geoms +-1e-3 rad (2.2.2) or
+  // clips the faces (3.3.8, nativeccd). "auto" (default): enabled where a
+  // contact group lets two polygons meet (a scene of boxes, as its users
+  // build one), off elsewhere (the cases without groups unchanged); "on", "off"
+  std::string multiccd = "auto";
+  // MuJoCo 3 only: MB of mjData's arena (<size memory>, contacts,
+  // constraint rows and the solver's stack share it); 0 = MuJoCo 3's own
+  // default (its heuristic from nv)
+  int memory_mb = 0;
 };
 
 // which MuJoCo a settings struct is bound for: its engine name, and the keys

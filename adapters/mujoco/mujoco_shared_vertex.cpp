@@ -27,25 +27,30 @@ bool same_orientation(const mjContact& a, const mjContact& b, const ModelLayout&
 
 }  // namespace
 
-int fuse_shared_vertex_contacts(mjData* d, const ModelLayout& layout) {
+int fuse_shared_vertex_contacts(mjData* d, const ModelLayout& layout,
+                                const ContactBuckets& buckets) {
   int fused = 0;
-  for (int i = 0; i < d->ncon; ++i) {
-    mjContact& c = d->contact[i];
-    if (c.exclude != 0) continue;
-    const int k = layout.pair_of(c.geom1, c.geom2);
-    if (k < 0) continue;
-    for (int j = 0; j < i; ++j) {
-      const mjContact& e = d->contact[j];
-      if (e.exclude != 0 || layout.pair_of(e.geom1, e.geom2) != k) continue;
-      // one geom pair reports distinct points; a repeat comes from another piece
-      if (e.geom1 == c.geom1 && e.geom2 == c.geom2) continue;
-      if (!same_point(e, c)) continue;
-      // the normals must agree as directions a -> b, not only as lines
-      const double dot = e.frame[0] * c.frame[0] + e.frame[1] * c.frame[1] + e.frame[2] * c.frame[2];
-      if ((dot > 0.0) != same_orientation(e, c, layout, k)) continue;
-      c.exclude = kExcludeFused;
-      ++fused;
-      break;
+  for (std::size_t bucket = 0; bucket < buckets.pairs().size(); ++bucket) {
+    const int k = buckets.pairs()[bucket];
+    const auto list = buckets.contacts(bucket);
+    for (std::size_t at = 1; at < list.size(); ++at) {
+      mjContact& c = d->contact[list[at]];
+      if (c.exclude != 0) continue;
+      // the pair's earlier contacts, in d->contact's order
+      for (std::size_t before = 0; before < at; ++before) {
+        const mjContact& e = d->contact[list[before]];
+        if (e.exclude != 0) continue;
+        // one geom pair reports distinct points; a repeat comes from another piece
+        if (e.geom1 == c.geom1 && e.geom2 == c.geom2) continue;
+        if (!same_point(e, c)) continue;
+        // the normals must agree as directions a -> b, not only as lines
+        const double dot =
+            e.frame[0] * c.frame[0] + e.frame[1] * c.frame[1] + e.frame[2] * c.frame[2];
+        if ((dot > 0.0) != same_orientation(e, c, layout, k)) continue;
+        c.exclude = kExcludeFused;
+        ++fused;
+        break;
+      }
     }
   }
   return fused;

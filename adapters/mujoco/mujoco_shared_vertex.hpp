@@ -18,6 +18,7 @@
 
 #include <mujoco/mujoco.h>
 
+#include "mujoco_contact_buckets.hpp"
 #include "mujoco_model.hpp"
 
 namespace pb::internal::mujoco {
@@ -35,7 +36,9 @@ inline constexpr double kSharedNormalTolerance = 1e-6;
 
 // Marks exclude = 2 on every included contact of a case pair that coincides
 // (point and normal, tolerances above) with an earlier included contact of
-// the same pair whose geoms differ; returns how many it marked.
-int fuse_shared_vertex_contacts(mjData* d, const ModelLayout& layout);
+// the same pair whose geoms differ; returns how many it marked. `buckets`:
+// d's contacts by pair (built on d).
+int fuse_shared_vertex_contacts(mjData* d, const ModelLayout& layout,
+                                const ContactBuckets& buckets);
 
 }  // namespace pb::internal::mujoco

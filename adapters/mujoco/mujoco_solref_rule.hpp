@@ -27,6 +27,11 @@
 //     accelerated alike.
 // Before that, a contact repeated at one point by two convex pieces of one
 // body is fused into the first (mujoco_shared_vertex.hpp): one row a point.
+// Per evaluation the contacts are grouped by pair once (mujoco_contact_buckets:
+// a scene's group pairs are registered as MuJoCo's broad phase reports them),
+// and only pairs with contacts are visited; the rows live on the two bodies'
+// DOFs only (mujoco_sparse_jacobian: at most 6 numbers, the dense rows' own
+// bits), so an evaluation costs O(contacts), not O(pairs x contacts x nv).
 // Nothing is taken from the future: the rule sees the state the step starts
 // from, as a user's code between mj_collision and mj_makeConstraint would.
 #pragma once
@@ -34,8 +39,10 @@
 #include <mujoco/mujoco.h>
 
 #include <nlohmann/json.hpp>
+#include <array>
 #include <vector>
 
+#include "mujoco_contact_buckets.hpp"
 #include "mujoco_model.hpp"
 #include "mujoco_pair_state.hpp"
 #include "planarbench/case.hpp"
@@ -45,8 +52,9 @@ namespace pb::internal::mujoco {
 
 class SolrefRule {
  public:
-  // `model` is the run's own model, whose pair_solref the rule writes
-  SolrefRule(const Case& c, mjModel* model, const ModelLayout& layout);
+  // `model` is the run's own model, whose pair_solref the rule writes;
+  // `layout` gains the group pairs MuJoCo's collider reports
+  SolrefRule(const Case& c, mjModel* model, ModelLayout& layout);
 
   // the hook of forward_checked (mujoco_stepping.hpp): `self` is a SolrefRule
   static void hook(void* self, const mjModel* m, mjData* d);
@@ -59,7 +67,10 @@ class SolrefRule {
     double scale = 1.0;
     int rows = 0;
   };
-  [[nodiscard]] const Last& last(std::size_t k) const { return last_[k]; }
+  [[nodiscard]] const Last& last(std::size_t k) const {
+    static const Last kNone{};
+    return k < last_.size() ? last_[k] : kNone;
+  }
   // the largest sigma and the most pressed contacts of one pair seen so far
   [[nodiscard]] double largest_scale() const { return largest_scale_; }
   [[nodiscard]] int most_rows() const { return most_rows_; }
@@ -71,15 +82,25 @@ class SolrefRule {
 
  private:
   void apply(const mjModel* m, mjData* d);
+  // A = J M^-1 J^T of rows_'s first n contacts of pair p, into a
+  void set_matrix(const mjModel* m, mjData* d, const PairLayout& p, int k, int n,
+                  ContactSetMatrix& a, std::array<double, kMaxContactSetPoints>& depth);
 
-  const Case& case_;
   mjModel* model_;
-  const ModelLayout& layout_;
+  ModelLayout& layout_;
   Scratch scratch_;
+  ContactBuckets buckets_;
   std::vector<int> rows_;            // contact indices of one pair, deepest first
-  std::vector<double> jrows_;        // kMaxContactSetPoints x nv: the rows' normal Jacobians
-  std::vector<double> minv_rows_;    // M^-1 of each row
-  std::vector<double> approach_mps_; // per pair, latched at its first step pressed (NaN: none)
+  // the rows' normal Jacobians and M^-1 of each: kMaxContactSetPoints x nv
+  // (dense), or x the pair's DOFs (scratch_.sparse)
+  std::vector<double> jrows_;
+  std::vector<double> minv_rows_;
+  // per pair: the approach speed latched at its first step pressed (NaN:
+  // none), and the evaluation it was last pressed in (a pair not pressed in
+  // the evaluation before is a new contact: it latches anew)
+  std::vector<double> approach_mps_;
+  std::vector<long> pressed_at_;
+  long evaluation_ = 0;
   std::vector<Last> last_;
   double largest_scale_ = 1.0;
   int most_rows_ = 0;

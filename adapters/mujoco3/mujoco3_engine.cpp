@@ -21,8 +21,10 @@
 #include <cmath>
 #include <optional>
 
+#include "mujoco3_batch.hpp"
 #include "mujoco3_mirror.hpp"
 #include "mujoco3_process.hpp"
+#include "mujoco_capacity.hpp"
 #include "mujoco_description.hpp"
 #include "mujoco_fault.hpp"
 #include "mujoco_friction.hpp"
@@ -64,9 +66,13 @@ const std::string& wasm_version() {
     const Mujoco3Install& in = mujoco3_install();
     if (!in.available) return "unavailable: " + in.reason;
     try {
-      Mujoco3Process p(in, kVersionTimeoutS);
+      // PB_MUJOCO3_TIMEOUT_S when set (a hung server.mjs made `list` wait
+      // 60 s at a 3 s limit: issue 49)
+      Mujoco3Process p(in, mujoco3_answer_timeout_s(kVersionTimeoutS));
       p.send(Kind::version, nullptr, 0);
-      const auto j = nlohmann::json::parse(p.receive_text(Kind::info));
+      const auto j = p.receive_info("VERSION", {{"version", JsonField::string},
+                                                {"package", JsonField::string},
+                                                {"node", JsonField::string}});
       return fmt::format("{} (mujoco-js {}, MuJoCo's WebAssembly build, Node {})",
                          j.at("version").get<std::string>(), j.at("package").get<std::string>(),
                          j.at("node").get<std::string>());
@@ -100,6 +106,7 @@ class Mujoco3Engine final : public Engine {
   }
   long steps() const override { return steps_; }
   nlohmann::json mapping() const override;
+  nlohmann::json extra_attributes() const override;
   Physics physics() const override;
   [[nodiscard]] long library_steps_on_this_thread() const override { return t_steps; }
 
@@ -124,6 +131,8 @@ class Mujoco3Engine final : public Engine {
   SettingsBinder binder_;
   Case case_;
   MujocoPlan plan_;
+  ContactCapacity capacity_;  // the mirror's nconmax (2.2.2's rule)
+  bool multiccd_ = false;     // <flag multiccd> (mujoco3.multiccd)
   ModelPtr mirror_model_;
   DataPtr mirror_data_;
   ModelLayout layout_;
@@ -155,6 +164,21 @@ MjcfOptions Mujoco3Engine::options(int major) const {
   o.noslip_iterations = settings_.noslip_iterations;
   o.mujoco_major = major;
   if (major >= 3) o.solreffriction = {settings_.solreffriction[0], settings_.solreffriction[1]};
+  // MuJoCo 3 keeps contacts and rows in its arena (its default size unless
+  // mujoco3.memory_mb); the 2.2.2 mirror holds the contacts only, so it is
+  // given the rule's nconmax and MuJoCo's default njmax (it makes no rows)
+  o.multiccd = multiccd_;
+  if (major >= 3) {
+    o.memory_mb = settings_.memory_mb;
+  } else {
+    o.nconmax = capacity_.nconmax;
+  }
+  for (std::size_t g = 0; g < case_.contact_groups.size(); ++g) {
+    PairParams p;
+    p.solref = {0.0, 0.0};  // set per contact by the rule once pressed
+    for (std::size_t i = 0; i < 5; ++i) p.solimp[i] = settings_.solimp[i];
+    o.groups.push_back(p);
+  }
   for (std::size_t k = 0; k < case_.contacts.size(); ++k) {
     PairParams p;
     p.gap_m = plan_.pairs[k].margin_m;  // active below distance 0
@@ -172,8 +196,21 @@ void Mujoco3Engine::build(const Case& c, const SettingsOverrides& overrides) {
   if (cap.support == Support::unsupported) {
     throw EngineError("mujoco3: cannot run case '" + c.name + "': " + cap.reason);
   }
+  if (c.has_contact_groups() && settings_.integrator == "RK4") {
+    throw EngineError(
+        "mujoco3: cannot run case '" + c.name +
+        "' with mujoco3.integrator=RK4: RK4's stages collide again and a contact group's "
+        "contacts then take their geoms' solref, not the rule's per-pair one; use Euler, "
+        "implicit or implicitfast");
+  }
   case_ = c;
   plan_ = plan_mujoco(case_, settings_.detection_margin_m);
+  // the mirror's contact capacity: 2.2.2's rule, or mujoco3.nconmax
+  MujocoSettings mirror = settings_;
+  mirror.njmax = 0;
+  multiccd_ = settings_.multiccd == "on" ||
+              (settings_.multiccd == "auto" && group_meshes_meet(case_, plan_));
+  capacity_ = contact_capacity(case_, plan_, mirror, model_dofs(case_, plan_), multiccd_);
   steps_ = 0;
   computed_ = 0;
   fault_step_ = -1;
@@ -195,7 +232,10 @@ void Mujoco3Engine::build(const Case& c, const SettingsOverrides& overrides) {
   const std::string xml = write_mjcf(case_, plan_, options(3));
   process_ = std::make_unique<Mujoco3Process>(mujoco3_install(), mujoco3_answer_timeout_s());
   process_->send(Kind::load, xml.data(), xml.size());
-  const auto info = nlohmann::json::parse(process_->receive_text(Kind::info));
+  const auto info = process_->receive_info(
+      "LOAD", {{"version", JsonField::string}, {"nq", JsonField::integer}, {"nv", JsonField::integer},
+               {"ngeom", JsonField::integer}, {"nbody", JsonField::integer},
+               {"npair", JsonField::integer}, {"integrator", JsonField::string}});
   const mjModel* m = mirror_model_.get();
   // the same MJCF must give the same layout in both versions
   const std::array<std::pair<const char*, int>, 5> sizes = {
@@ -255,6 +295,20 @@ void Mujoco3Engine::build(const Case& c, const SettingsOverrides& overrides) {
       {"pairs", pairs},
       {"not_expressed", lost},
   };
+  if (case_.has_contact_groups()) {
+    mapping_["groups"] = describe_groups(case_, plan_, settings_.solimp, mapping_["not_expressed"],
+                                         MujocoLine::v3);
+    mapping_["capacity"] = {
+        {"mujoco3",
+         settings_.memory_mb > 0
+             ? fmt::format("<size memory=\"{}M\"> (mujoco3.memory_mb): contacts, rows and the "
+                           "solver's stack share it",
+                           settings_.memory_mb)
+             : std::string("MuJoCo 3's default arena (its heuristic from nv; no <size>): "
+                           "contacts, rows and the solver's stack share it")},
+        {"mirror_nconmax", capacity_.nconmax},
+        {"mirror_rule", capacity_.rule}};
+  }
 
   // the initial state, as 2.2.2's adapter sets it (set_initial_state)
   out_.assign(mirror_data_->qpos, mirror_data_->qpos + m->nq);
@@ -264,79 +318,46 @@ void Mujoco3Engine::build(const Case& c, const SettingsOverrides& overrides) {
   pending_.pop_front();
 }
 
-// A message's numbers, read in order; a short one is the other side's fault.
-class Reader {
- public:
-  explicit Reader(std::span<const double> v) : v_(v) {}
-  std::span<const double> take(std::size_t n) {
-    if (at_ + n > v_.size()) throw EngineError("mujoco3: a BATCH message cut short");
-    const auto out = v_.subspan(at_, n);
-    at_ += n;
-    return out;
-  }
-  double next() { return take(1)[0]; }
-  std::size_t count() {
-    const double x = next();
-    if (!(x >= 0.0) || x != std::floor(x)) throw EngineError("mujoco3: a bad count in a BATCH");
-    return static_cast<std::size_t>(x);
-  }
-  [[nodiscard]] bool done() const { return at_ == v_.size(); }
-
- private:
-  std::span<const double> v_;
-  std::size_t at_ = 0;
-};
-
 void Mujoco3Engine::fetch(Kind command, const std::vector<double>& payload) {
   mjModel* m = mirror_model_.get();
   mjData* d = mirror_data_.get();
-  const auto nq = static_cast<std::size_t>(m->nq);
-  const auto nv = static_cast<std::size_t>(m->nv);
+  const BatchLayout layout{static_cast<std::size_t>(m->nq), static_cast<std::size_t>(m->nv),
+                           static_cast<std::size_t>(m->ngeom)};
   process_->send_numbers(command, payload);
   for (;;) {
     process_->receive_numbers(Kind::batch, in_);
-    Reader r(in_);
-    const std::size_t records = r.count();
-    for (std::size_t k = 0; k < records; ++k) {
+    // the whole message checked before any of it is used (mujoco3_batch.hpp)
+    const Batch batch = read_batch(in_, layout);
+    for (const BatchStep& s : batch.records) {
       Record rec;
       rec.step = computed_++;
-      const bool asked = r.next() != 0.0;
-      const auto warnings = r.take(2 * kWarnings);
-      const auto qpos = r.take(nq);
-      const auto qvel = r.take(nv);
-      rec.ncon = r.count();
-      const auto contacts = r.take(rec.ncon * kRecordContactNumbers);
-      rec.numbers.assign(qpos.begin(), qpos.end());
-      rec.numbers.insert(rec.numbers.end(), qvel.begin(), qvel.end());
-      rec.numbers.insert(rec.numbers.end(), contacts.begin(), contacts.end());
+      rec.ncon = s.ncon;
+      rec.numbers.assign(s.qpos.begin(), s.qpos.end());
+      rec.numbers.insert(rec.numbers.end(), s.qvel.begin(), s.qvel.end());
+      rec.numbers.insert(rec.numbers.end(), s.contacts.begin(), s.contacts.end());
       // a step nobody asked about has no contact in the constraint: the rule
       // sets nothing there, but it sees the step (a contact's end). With no
       // pressed contact it reads the contacts only, never the state's
       // Jacobians: the mirror's kinematics wait for consume()
-      if (!asked && fault_step_ < 0) {
-        mirror_contacts(m, d, contacts, rec.ncon, kRecordContactNumbers);
+      if (!s.asked && fault_step_ < 0) {
+        mirror_contacts(m, d, s.contacts, rec.ncon, kRecordContactNumbers);
         SolrefRule::hook(rule_.get(), m, d);
       }
-      note_warnings(rec.step, warnings);
+      note_warnings(rec.step, s.warnings);
       pending_.push_back(std::move(rec));
     }
-    if (r.next() == 0.0) {
-      if (!r.done()) throw EngineError("mujoco3: a BATCH message too long");
-      return;
-    }
+    if (!batch.question) return;
     // the question: the contacts of step computed_ after mj_collision
-    note_warnings(computed_, r.take(2 * kWarnings));
-    const auto qpos = r.take(nq);
-    const auto qvel = r.take(nv);
-    mirror_state(m, d, qpos, qvel);
-    const std::size_t ncon = r.count();
-    mirror_contacts(m, d, r.take(ncon * kContactNumbers), ncon, kContactNumbers);
+    const BatchStep& q = *batch.question;
+    note_warnings(computed_, q.warnings);
+    mirror_state(m, d, q.qpos, q.qvel);
+    mirror_contacts(m, d, q.contacts, q.ncon, kContactNumbers);
     // the rule, once: each contact's solref (and m->pair_solref, which RK4's
     // stages reuse), and the contacts fused at a shared vertex
     SolrefRule::hook(rule_.get(), m, d);
     out_.clear();
     out_.insert(out_.end(), m->pair_solref, m->pair_solref + mjNREF * m->npair);
-    for (std::size_t i = 0; i < ncon; ++i) {
+    for (std::size_t i = 0; i < q.ncon; ++i) {
       const mjContact& con = d->contact[i];
       out_.push_back(con.solref[0]);
       out_.push_back(con.solref[1]);
@@ -423,6 +444,23 @@ nlohmann::json Mujoco3Engine::mapping() const {
   }
   if (sampler_ && m.is_object()) sampler_->add_depth_checks(m);
   return m;
+}
+
+nlohmann::json Mujoco3Engine::extra_attributes() const {
+  nlohmann::json j = nlohmann::json::object();
+  if (!case_.has_contact_groups() || !process_ || !fault_.empty()) return j;
+  // MuJoCo 3's arena and the most of it used (mjData::maxuse_*)
+  try {
+    process_->send(Kind::stats, nullptr, 0);
+    j["mujoco3_capacity"] = process_->receive_info(
+        "STATS", {{"narena_bytes", JsonField::number}, {"maxuse_arena_bytes", JsonField::number},
+                  {"most_contacts", JsonField::integer}, {"most_rows", JsonField::integer}});
+    j["mujoco3_capacity"]["group_pairs_found"] =
+        layout_.pairs.size() - static_cast<std::size_t>(layout_.declared());
+  } catch (const std::exception& e) {
+    j["mujoco3_capacity"] = {{"unavailable", e.what()}};
+  }
+  return j;
 }
 
 Physics Mujoco3Engine::physics() const {

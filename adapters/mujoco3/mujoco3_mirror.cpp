@@ -26,8 +26,9 @@ void mirror_contacts(const mjModel* m, mjData* d, std::span<const double> c, std
   }
   if (n > static_cast<std::size_t>(m->nconmax)) {
     throw EngineError(fmt::format(
-        "mujoco3: MuJoCo 3 reported {} contacts, more than the 2.2.2 mirror's nconmax {}", n,
-        m->nconmax));
+        "mujoco3: MuJoCo 3 reported {} contacts, more than the 2.2.2 mirror's nconmax {} "
+        "(mujoco3.nconmax raises it)",
+        n, m->nconmax));
   }
   d->ncon = static_cast<int>(n);
   for (std::size_t i = 0; i < n; ++i) {

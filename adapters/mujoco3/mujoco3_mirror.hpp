@@ -13,15 +13,9 @@
 
 #include <span>
 
-namespace pb::internal::mujoco3 {
+#include "mujoco3_batch.hpp"  // kContactNumbers, kRecordContactNumbers, kWarnings
 
-// numbers of one contact in the WebAssembly side's question (wasm/server.mjs):
-// geom1, geom2, dist, pos[3], frame[9], exclude
-inline constexpr std::size_t kContactNumbers = 16;
-// and in a step's record: those, efc_address and mj_contactForce's 6
-inline constexpr std::size_t kRecordContactNumbers = 23;
-// mjNWARNING of 3.3.8 (mjtWarning, the same eight kinds in the same order as 2.2.2)
-inline constexpr std::size_t kWarnings = 8;
+namespace pb::internal::mujoco3 {
 
 // qpos, qvel into the mirror, then the stages whose results the rule and the
 // observations read: mj_kinematics, mj_comPos, mj_crb, mj_factorM (M and its
@@ -31,7 +25,8 @@ void mirror_state(const mjModel* m, mjData* d, std::span<const double> qpos,
 
 // the `n` contacts 3.3.8's mj_collision found, `stride` numbers each
 // (kContactNumbers first; a record's carry efc_address next, which is set
-// too), as the mirror's d->contact; throws EngineError beyond its nconmax
+// too; their integers checked by read_batch), as the mirror's d->contact;
+// throws EngineError beyond its nconmax
 void mirror_contacts(const mjModel* m, mjData* d, std::span<const double> contacts,
                      std::size_t n, std::size_t stride);
 

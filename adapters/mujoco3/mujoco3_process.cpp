@@ -3,8 +3,8 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
-#include <spawn.h>
-#include <sys/stat.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -89,6 +89,23 @@ std::string tail_of(int fd) {
   return text;
 }
 
+// the other side's text (an ERROR frame, an INFO frame shown) as one line of
+// a run's reason: control characters become spaces, at most `keep`
+// characters (a 1 MB frame was a 1 MB reason)
+std::string one_line(const std::vector<unsigned char>& bytes, std::size_t keep) {
+  std::string text;
+  for (const unsigned char ch : bytes) {
+    if (text.size() == keep) break;
+    text.push_back(ch < 32 || ch == 127 ? ' ' : static_cast<char>(ch));
+  }
+  if (bytes.size() > keep) text += fmt::format("... ({} bytes in all)", bytes.size());
+  return text;
+}
+
+const char* json_type_name(JsonField type) {
+  return type == JsonField::string ? "a string" : type == JsonField::integer ? "an integer" : "a number";
+}
+
 }  // namespace
 
 const Mujoco3Install& mujoco3_install() {
@@ -96,9 +113,9 @@ const Mujoco3Install& mujoco3_install() {
   return in;
 }
 
-double mujoco3_answer_timeout_s() {
+double mujoco3_answer_timeout_s(double unset_s) {
   const char* v = std::getenv("PB_MUJOCO3_TIMEOUT_S");
-  if (v == nullptr || *v == '\0') return 120.0;
+  if (v == nullptr || *v == '\0') return unset_s;
   char* end = nullptr;
   const double s = std::strtod(v, &end);
   if (end == v || *end != '\0' || !(s >= 0.1 && s <= 86400.0)) {
@@ -119,23 +136,65 @@ Mujoco3Process::Mujoco3Process(const Mujoco3Install& install, double answer_time
   char name[] = "/tmp/planarbench-mujoco3-XXXXXX";
   stderr_file_ = ::mkostemp(name, O_CLOEXEC);
   if (stderr_file_ >= 0) ::unlink(name);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, in_pipe[0], 0);
-  posix_spawn_file_actions_adddup2(&actions, out_pipe[1], 1);
-  if (stderr_file_ >= 0) posix_spawn_file_actions_adddup2(&actions, stderr_file_, 2);
   std::string node = install.node;
   std::string server = install.server;
-  std::array<char*, 3> argv = {node.data(), server.data(), nullptr};
-  const int rc = ::posix_spawn(&pid_, node.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
+  // Node's WebAssembly guards each memory with ~10 GB of reserved address
+  // space (V8's trap handler); under an address-space cap (ulimit -v) that
+  // reservation fails and so does every run. Without the trap handler V8
+  // checks bounds in code instead (Node's --disable-wasm-trap-handler): the
+  // same results, a little slower (issue 49).
+  std::string no_trap = "--disable-wasm-trap-handler";
+  std::vector<char*> argv = {node.data()};
+  rlimit as{};
+  if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) argv.push_back(no_trap.data());
+  argv.push_back(server.data());
+  argv.push_back(nullptr);
+  // a pipe that tells the parent whether exec failed (it closes on exec)
+  int exec_pipe[2];
+  if (::pipe2(exec_pipe, O_CLOEXEC) != 0) {
+    throw EngineError(fmt::format("mujoco3: pipe: {}", std::strerror(errno)));
+  }
+  const pid_t parent = ::getpid();
+  // fork, not posix_spawn: the child must die with this process (a run
+  // past --run-timeout is SIGKILLed, and so must be the Node it started,
+  // which would otherwise hold the run's pipes open for ever) and must not
+  // inherit any descriptor but its three. Only async-signal-safe calls
+  // follow in the child.
+  pid_ = ::fork();
+  if (pid_ == 0) {
+    ::dup2(in_pipe[0], 0);
+    ::dup2(out_pipe[1], 1);
+    if (stderr_file_ >= 0) ::dup2(stderr_file_, 2);
+    // every other descriptor closed, the exec-error pipe kept
+    if (exec_pipe[1] > 3) ::close_range(3, static_cast<unsigned>(exec_pipe[1]) - 1, 0);
+    ::close_range(static_cast<unsigned>(exec_pipe[1]) + 1, ~0U, 0);
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(127);  // the parent went before prctl
+    ::execve(node.c_str(), argv.data(), environ);
+    const int e = errno;
+    [[maybe_unused]] const ssize_t w = ::write(exec_pipe[1], &e, sizeof e);
+    ::_exit(127);
+  }
+  const int fork_errno = errno;
+  ::close(exec_pipe[1]);
   ::close(in_pipe[0]);
   ::close(out_pipe[1]);
   to_child_ = in_pipe[1];
   from_child_ = out_pipe[0];
-  if (rc != 0) {
+  int exec_errno = 0;
+  if (pid_ < 0) {
+    exec_errno = fork_errno;
+  } else {
+    ssize_t r = 0;
+    while ((r = ::read(exec_pipe[0], &exec_errno, sizeof exec_errno)) < 0 && errno == EINTR) {
+    }
+    if (r != static_cast<ssize_t>(sizeof exec_errno)) exec_errno = 0;
+  }
+  ::close(exec_pipe[0]);
+  if (exec_errno != 0) {
+    if (pid_ > 0) ::waitpid(pid_, nullptr, 0);
     pid_ = -1;
-    fail(fmt::format("cannot start {} {}: {}", install.node, install.server, std::strerror(rc)));
+    fail(fmt::format("cannot start {} {}: {}", install.node, install.server, std::strerror(exec_errno)));
   }
 }
 
@@ -266,7 +325,8 @@ void Mujoco3Process::receive(Kind expected, std::vector<unsigned char>& bytes) {
   bytes.resize(head[1]);
   if (head[1] > 0) read_exactly(bytes.data(), head[1]);
   if (head[0] == static_cast<std::uint32_t>(Kind::error)) {
-    throw EngineError("mujoco3: " + std::string(bytes.begin(), bytes.end()));
+    if (bytes.empty()) fail("sent an empty ERROR frame (no reason)");
+    throw EngineError("mujoco3: " + one_line(bytes, 600));
   }
   if (head[0] != static_cast<std::uint32_t>(expected)) {
     fail(fmt::format("answered message kind {} where {} was expected", head[0],
@@ -285,9 +345,27 @@ std::string Mujoco3Process::stderr_tail() const {
   return tail_of(stderr_file_);
 }
 
-std::string Mujoco3Process::receive_text(Kind expected) {
-  receive(expected, scratch_);
-  return std::string(scratch_.begin(), scratch_.end());
+nlohmann::json Mujoco3Process::receive_info(const char* answer_to,
+                                            std::initializer_list<std::pair<const char*, JsonField>> fields) {
+  receive(Kind::info, scratch_);
+  nlohmann::json j = nlohmann::json::parse(scratch_.begin(), scratch_.end(), nullptr, false);
+  if (!j.is_object()) {
+    fail(fmt::format("answered {} with an INFO frame that is not a JSON object (\"{}\")", answer_to,
+                     one_line(scratch_, 80)));
+  }
+  for (const auto& [key, type] : fields) {
+    const auto it = j.find(key);
+    const bool ok = it != j.end() &&
+                    (type == JsonField::string    ? it->is_string()
+                     : type == JsonField::integer ? it->is_number_integer() || it->is_number_unsigned()
+                                                  : it->is_number());
+    if (!ok) {
+      fail(fmt::format("answered {} with an INFO frame whose \"{}\" is {} (it must be {})", answer_to,
+                       key, it == j.end() ? "missing" : std::string("a JSON ") + it->type_name(),
+                       json_type_name(type)));
+    }
+  }
+  return j;
 }
 
 }  // namespace pb::internal::mujoco3

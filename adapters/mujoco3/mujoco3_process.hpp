@@ -9,8 +9,12 @@
 #include <sys/types.h>
 
 #include <cstdint>
+#include <initializer_list>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 namespace pb::internal::mujoco3 {
 
@@ -29,17 +33,20 @@ struct Mujoco3Install {
 [[nodiscard]] const Mujoco3Install& mujoco3_install();
 
 // s, the longest the WebAssembly side may take to answer one message before a
-// run is ended as a hang: PB_MUJOCO3_TIMEOUT_S, else 120 (loading the module
-// and a model takes well under a second here, a step a few us). Not a
-// setting: it changes no number a run computes. Throws EngineError when the
-// variable is not a number in [0.1, 86400].
-[[nodiscard]] double mujoco3_answer_timeout_s();
+// run is ended as a hang: PB_MUJOCO3_TIMEOUT_S, else `unset_s` (120 for a
+// run: loading the module and a model takes well under a second here, a step
+// a few us). Not a setting: it changes no number a run computes. Throws
+// EngineError when the variable is not a number in [0.1, 86400].
+[[nodiscard]] double mujoco3_answer_timeout_s(double unset_s = 120.0);
 
 // message kinds (wasm/server.mjs)
 enum class Kind : std::uint32_t {
-  version = 0, load = 1, start = 2, solrefs = 3, run = 4, quit = 5,
+  version = 0, load = 1, start = 2, solrefs = 3, run = 4, quit = 5, stats = 6,
   info = 1, batch = 2, error = 9,
 };
+
+// what an INFO answer's field must hold
+enum class JsonField { string, integer, number };
 
 class Mujoco3Process {
  public:
@@ -57,7 +64,11 @@ class Mujoco3Process {
   // text as EngineError); `bytes` receives the payload
   void receive(Kind expected, std::vector<unsigned char>& bytes);
   void receive_numbers(Kind expected, std::vector<double>& values);
-  [[nodiscard]] std::string receive_text(Kind expected);
+  // the next frame, an INFO answer to `answer_to` (a command's name): a JSON
+  // object holding `fields` of those types, else the process's fault (one
+  // line naming the field, never a parser's exception)
+  [[nodiscard]] nlohmann::json receive_info(
+      const char* answer_to, std::initializer_list<std::pair<const char*, JsonField>> fields);
   // the last lines the process wrote to stderr (MuJoCo's warnings), "" if none
   [[nodiscard]] std::string stderr_tail() const;
 

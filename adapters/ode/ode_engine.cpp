@@ -1,7 +1,11 @@
 // The ODE adapter, engine "ode": builds any case from the pb::Case model
 // through ODE 0.16.2 (double precision) the way its users do: one dWorld and
-// one dSpace per engine, dSpaceCollide with a near callback, contact joints
-// in a dJointGroup emptied every step, at the step the user gives. Modes:
+// one dSpace per engine, contact joints in a dJointGroup emptied every step,
+// at the step the user gives. A scene's pairs come from ODE's broad phase
+// (a dSweepAndPruneSpace, dSpaceCollide and a near callback:
+// ode_space_collider.hpp);
+// a case of declared pairs calls dCollide on each pair's geoms directly
+// (ode_pair_contact.hpp). Modes:
 //   native  (default) every contact ODE reports is a soft contact joint whose
 //           ERP/CFM is set each step from the case's law at the pair's
 //           current penetration, spread over the pair's contacts (SPEC §5b:
@@ -55,6 +59,11 @@ Capability OdeEngine::supports(const Case& c) const {
               fmt::format("body '{}' moves but has no positive mass and inertia", b.name)};
     }
   }
+  if (settings_.mode == "oracle" && c.has_contact_groups()) {
+    return {Support::unsupported,
+            "mode oracle calibrates each declared pair on a contact-free probe run before the "
+            "run; a scene's group pairs are only known once ODE's broad phase finds them"};
+  }
   if (settings_.mode == "inject") {
     if (auto why = inject_friction_reason(c); !why.empty()) return {Support::unsupported, why};
     return {Support::native, ""};
@@ -68,6 +77,13 @@ Capability OdeEngine::supports(const Case& c) const {
     if (p != nullptr && !internal::ode::is_convex_ccw(p->points_m)) {
       add(fmt::format("body '{}': a non-convex polygon as convex prisms of its pieces", b.name));
     }
+  }
+  for (const ContactGroup& g : c.contact_groups) {
+    if (is_plain_kelvin_voigt(g.law)) continue;
+    add(fmt::format(
+        "group '{}': {} as ODE's linear soft contact, its stiffness and damping set each step "
+        "from the law at the current penetration",
+        g.name, contact_law_name(g.law)));
   }
   for (const ContactPair& p : c.contacts) {
     if (is_plain_kelvin_voigt(p.law)) continue;
@@ -92,8 +108,11 @@ Physics OdeEngine::physics() const {
   p.mode = settings_.mode;
   p.collision_by = "engine";
   p.collision =
-      "ODE's own colliders (dSpaceCollide, near callback, dCollide) on spheres, convex prisms and "
-      "planes";
+      "ODE's own colliders on spheres, convex prisms and planes: a scene's pairs from ODE's broad "
+      "phase (dSweepAndPruneSpace, dSpaceCollide, a near callback that keeps the pairs the case's "
+      "rules "
+      "let touch and calls dCollide); a case of declared pairs by dCollide on each pair's geoms "
+      "directly";
   if (settings_.mode == "inject") {
     p.contact_force_by = "adapter (case law)";
     p.contact_force =
@@ -132,7 +151,8 @@ void OdeEngine::build(const Case& c, const SettingsOverrides& overrides) {
   case_ = c;
   inject_ = settings_.mode == "inject";
   oracle_ = settings_.mode == "oracle";
-  quick_ = settings_.stepper == "quick";
+  quick_ = settings_.stepper == "quick" ||
+           (settings_.stepper == "auto" && case_.has_contact_groups());
   corrected_ = settings_.damping_mapping == "corrected";
   steps_ = 0;
   probe_steps_ = 0;
@@ -141,9 +161,10 @@ void OdeEngine::build(const Case& c, const SettingsOverrides& overrides) {
   worst_hk_over_c_ = 0.0;
   diverged_.clear();
   tracker_ = EpisodeTracker{};
-  world_.reset();
   collider_.reset();
+  world_.reset();
   messages_seen_ = 0;
+  pairs_ = std::make_unique<ContactPairs>(case_);
   first_message_.clear();
 
   // every ODE step this build takes (a trace, not the probe's own count)
@@ -169,14 +190,20 @@ void OdeEngine::build(const Case& c, const SettingsOverrides& overrides) {
 
   world_ = std::make_unique<OdeWorld>(case_);
   if (quick_) dWorldSetQuickStepNumIterations(world_->world(), settings_.quick_iterations);
-  collider_ = std::make_unique<PairCollider>(case_, *world_);
-  const std::size_t pairs = case_.contacts.size();
-  track_.assign(pairs, PairTrack{});
-  feedback_per_pair_ = oracle_ ? 1 : static_cast<std::size_t>(collider_->capacity());
-  feedback_.assign(pairs * feedback_per_pair_, dJointFeedback{});
-  explicit_n_.assign(pairs * feedback_per_pair_, 0.0);
-  joints_made_.assign(pairs, 0);
-  now_.assign(pairs, PairContact{});
+  if (case_.has_contact_groups()) {
+    collider_ = std::make_unique<SpaceCollider>(case_, *world_, *pairs_);
+  } else {
+    collider_ = std::make_unique<PairCollider>(case_, *world_);
+  }
+  // per pair, grown as pairs are added (sample_contacts); per joint, a pool
+  // sized by each step's contacts (step_once)
+  track_.assign(static_cast<std::size_t>(pairs_->size()), PairTrack{});
+  in_contact_.clear();
+  forced_.clear();
+  now_.clear();
+  joints_.clear();
+  feedback_.clear();
+  explicit_n_.clear();
   angle_rad_.clear();
   force_n_.assign(case_.bodies.size(), Vec2::Zero());
   torque_nm_.assign(case_.bodies.size(), 0.0);
@@ -184,34 +211,8 @@ void OdeEngine::build(const Case& c, const SettingsOverrides& overrides) {
     angle_rad_.push_back(case_.bodies[static_cast<std::size_t>(i)].angle_rad);
 
   // what the bodies became
-  nlohmann::json bodies = nlohmann::json::array();
-  for (std::size_t i = 0; i < case_.bodies.size(); ++i) {
-    const Body& b = case_.bodies[i];
-    std::string held = "fixed: a static geom without body";
-    if (!b.fixed) {
-      held =
-          "Plane2D joint keeps z = 0; the orientation's drift is reset to a pure z rotation "
-          "after every step";
-      for (const RevoluteJoint& j : case_.joints) {
-        if (j.body == static_cast<int>(i)) {
-          held = fmt::format("hinge to the world about z through ({}, {}) m (no Plane2D needed)",
-                             j.anchor_world_m.x(), j.anchor_world_m.y());
-        }
-      }
-    }
-    nlohmann::json jb = {{"body", b.name},
-                         {"geom", world_->geom_description(static_cast<int>(i))},
-                         {"constraint", held}};
-    if (!b.fixed) {
-      jb["mass"] = fmt::format(
-          "dMassSetParameters: m = {} kg, centre of mass at the body origin, "
-          "I_xx = I_yy = I_zz = {} kg m^2 (the case's planar inertia; the "
-          "out-of-plane entries never act)",
-          b.mass_kg, b.inertia_kgm2);
-    }
-    bodies.push_back(jb);
-  }
-  mapping_["bodies"] = bodies;
+  mapping_["bodies"] = bodies_json();
+  if (!oracle_) mapping_["collision"] = collision_text();
   mapping_["frame"] =
       "case x-y plane = ODE x-y plane at z = 0; case angle = rotation about +z, counter-clockwise; "
       "quaternion (cos a/2, 0, 0, sin a/2)";
@@ -221,12 +222,17 @@ void OdeEngine::build(const Case& c, const SettingsOverrides& overrides) {
                        {"contact_surface_layer_m", 0.0},
                        {"contact_max_correcting_vel", "infinity"},
                        {"auto_disable", false}};
-  mapping_["stepper"] =
-      quick_ ? fmt::format(
-                   "dWorldQuickStep, {} iterations; dRandSetSeed(step index) before each "
-                   "step under a process-wide lock (ODE's row-order seed is global)",
-                   settings_.quick_iterations)
-             : std::string("dWorldStep (direct LCP solver, deterministic)");
+  mapping_["stepper"] = fmt::format(
+      "{}{}",
+      quick_ ? fmt::format("dWorldQuickStep, {} iterations; dRandSetSeed(step index) before "
+                           "each step under a process-wide lock (ODE's row-order seed is "
+                           "global)",
+                           settings_.quick_iterations)
+             : std::string("dWorldStep (direct LCP solver, deterministic)"),
+      settings_.stepper != "auto" ? std::string()
+      : quick_ ? std::string("; ode.stepper = auto: a scene (contact groups), one island of many "
+                             "rows, where dWorldStep's dense O(m^3) LCP is out of reach")
+               : std::string("; ode.stepper = auto: a case of declared pairs"));
 
   probe_steps_ = internal::ode::world_steps_on_this_thread() - steps_at_start;
 
@@ -234,8 +240,8 @@ void OdeEngine::build(const Case& c, const SettingsOverrides& overrides) {
   // energy, which the runaway bounds allow for
   sample_contacts();
   double elastic_j = 0.0;
-  for (std::size_t p = 0; p < now_.size(); ++p) {
-    if (now_[p].touching) elastic_j += elastic_energy_j(case_.contacts[p].law, now_[p].depth_m);
+  for (const PairContact& pc : now_.pairs) {
+    elastic_j += elastic_energy_j(pair(pc.pair).law, pc.depth_m);
   }
   world_->set_initial_contact_energy(elastic_j);
 }
@@ -262,19 +268,17 @@ void OdeEngine::advance_to(double t_s) {
 bool OdeEngine::injected_forces_run_away() {
   std::fill(force_n_.begin(), force_n_.end(), Vec2::Zero());
   std::fill(torque_nm_.begin(), torque_nm_.end(), 0.0);
-  for (std::size_t p = 0; p < now_.size(); ++p) {
-    const PairContact& pc = now_[p];
-    const double f = track_[p].force_n;  // N
-    if (!pc.touching) continue;
+  for (const PairContact& pc : now_.pairs) {
+    const double f = track_[static_cast<std::size_t>(pc.pair)].force_n;  // N
+    const ContactPair& cp = pair(pc.pair);
     if (!std::isfinite(f)) {
       diverged_ = fmt::format("ode: the contact force of '{}' is not finite at t = {:.9g} s",
-                              case_.contacts[p].name, time());
+                              cp.name, time());
       return true;
     }
     if (!(f > 0.0)) continue;
     // body b is pushed along n_ab, body a against it; torque r x F about each centre
-    const ContactPair& pair = case_.contacts[p];
-    for (const auto& [i, sign] : {std::pair{pair.body_b, 1.0}, std::pair{pair.body_a, -1.0}}) {
+    for (const auto& [i, sign] : {std::pair{cp.body_b, 1.0}, std::pair{cp.body_a, -1.0}}) {
       if (world_->body(i) == nullptr) continue;
       const auto k = static_cast<std::size_t>(i);
       const Vec2 force = sign * f * pc.normal_ab;
@@ -295,18 +299,19 @@ bool OdeEngine::injected_forces_run_away() {
   return false;
 }
 
-// native: every contact of pair p a soft joint, the law spread over them
-// (ode_contact_mapping.hpp, spread_law)
-void OdeEngine::add_native_joints(std::size_t p) {
-  const PairContact& pc = now_[p];
-  const LinearizedLaw lin =
-      linearize_law(case_.contacts[p].law, pc.depth_m, track_[p].latched_approach_mps);
+// native: every contact of entry e of now_.pairs a soft joint, the law
+// spread over them (ode_contact_mapping.hpp, spread_law)
+void OdeEngine::add_native_joints(std::size_t e) {
+  const PairContact& pc = now_.pairs[e];
+  const ContactPair& cp = pair(pc.pair);
+  const LinearizedLaw lin = linearize_law(
+      cp.law, pc.depth_m, track_[static_cast<std::size_t>(pc.pair)].latched_approach_mps);
   if (!(lin.stiffness_n_per_m > 0.0)) return;  // nothing pressed in: no force
-  const bool friction = case_.contacts[p].has_friction();
+  const bool friction = cp.has_friction();
   int pressed = 0;
-  for (int i = 0; i < pc.count; ++i) pressed += pc.geoms[static_cast<std::size_t>(i)].depth > 0.0;
+  for (int i = 0; i < pc.count; ++i) pressed += now_.geom(pc, i).depth > 0.0;
   for (int i = 0; i < pc.count; ++i) {
-    const dContactGeom& g = pc.geoms[static_cast<std::size_t>(i)];
+    const dContactGeom& g = now_.geom(pc, i);
     if (!(g.depth > 0.0)) continue;  // a touching contact carries no spring
     // with friction, one CFM for the pair's rows (ode_contact_mapping.hpp, face_row)
     internal::ode::SpreadLaw row_law = internal::ode::spread_law(
@@ -335,13 +340,14 @@ void OdeEngine::add_native_joints(std::size_t p) {
     contact.surface.soft_erp = row.erp;
     contact.surface.soft_cfm = row.cfm;
     contact.geom = g;
-    internal::ode::add_coulomb_friction(contact, case_.contacts[p].friction);
+    internal::ode::add_coulomb_friction(contact, cp.friction);
     const dJointID j = dJointCreateContact(world_->world(), world_->contact_group(), &contact);
     dJointAttach(j, dGeomGetBody(g.g1), dGeomGetBody(g.g2));
-    auto& n = joints_made_[p];
-    dJointSetFeedback(j, &feedback_[p * feedback_per_pair_ + static_cast<std::size_t>(n)]);
-    explicit_n_[p * feedback_per_pair_ + static_cast<std::size_t>(n)] = explicit_n;
-    ++n;
+    JointRange& made = joints_[e];
+    const auto slot = static_cast<std::size_t>(made.first + made.count);
+    dJointSetFeedback(j, &feedback_[slot]);
+    explicit_n_[slot] = explicit_n;
+    ++made.count;
     ++rows_made_;
   }
 }
@@ -372,48 +378,58 @@ void OdeEngine::add_normal_force(const dContactGeom& g, double f_n) const {
   }
 }
 
-// oracle: the deepest contact of pair p, with the calibrated soft contact
-void OdeEngine::add_oracle_joint(std::size_t p) {
-  const dContactGeom& g = now_[p].geoms[static_cast<std::size_t>(now_[p].deepest)];
+// oracle: the deepest contact of entry e of now_.pairs (a declared pair),
+// with the calibrated soft contact
+void OdeEngine::add_oracle_joint(std::size_t e) {
+  const PairContact& pc = now_.pairs[e];
+  const auto p = static_cast<std::size_t>(pc.pair);
+  const dContactGeom& g = now_.geom(pc, pc.deepest);
   dContact contact{};
   contact.surface.mode = dContactSoftERP | dContactSoftCFM;
   contact.surface.mu = 0.0;
   contact.surface.soft_erp = soft_[p].erp;
   contact.surface.soft_cfm = soft_[p].cfm;
   contact.geom = g;
-  internal::ode::add_coulomb_friction(contact, case_.contacts[p].friction);
+  internal::ode::add_coulomb_friction(contact, pair(pc.pair).friction);
   const dJointID j = dJointCreateContact(world_->world(), world_->contact_group(), &contact);
   dJointAttach(j, dGeomGetBody(g.g1), dGeomGetBody(g.g2));
-  dJointSetFeedback(j, &feedback_[p * feedback_per_pair_]);
-  joints_made_[p] = 1;
+  dJointSetFeedback(j, &feedback_[static_cast<std::size_t>(joints_[e].first)]);
+  joints_[e].count = 1;
 }
 
 void OdeEngine::step_once() {
-  const std::size_t pairs = now_.size();
   if (inject_ && injected_forces_run_away()) return;
+  // at most one joint per contact of the state: the step's pool, grown
+  // before any joint points into it
+  if (feedback_.size() < now_.geoms.size()) {
+    feedback_.resize(now_.geoms.size());
+    explicit_n_.resize(now_.geoms.size());
+  }
+  joints_.resize(now_.pairs.size());
   // contact forces of this step, from the contacts at the current state
-  for (std::size_t p = 0; p < pairs; ++p) {
-    joints_made_[p] = 0;
-    const PairContact& pc = now_[p];
-    if (!pc.touching) continue;
+  int rows = 0;
+  for (std::size_t e = 0; e < now_.pairs.size(); ++e) {
+    const PairContact& pc = now_.pairs[e];
+    joints_[e] = JointRange{rows, 0};
     if (inject_) {
-      const double f = track_[p].force_n;  // N, the law at the current state
+      const double f = track_[static_cast<std::size_t>(pc.pair)].force_n;  // N, the law now
       if (!(f > 0.0)) continue;
       // body b is pushed along n_ab, body a the other way, at the pair's point
-      const ContactPair& pair = case_.contacts[p];
+      const ContactPair& cp = pair(pc.pair);
       const Vec2 at = pc.point_m;
-      if (const dBodyID b = world_->body(pair.body_b); b != nullptr) {
+      if (const dBodyID b = world_->body(cp.body_b); b != nullptr) {
         dBodyAddForceAtPos(b, f * pc.normal_ab.x(), f * pc.normal_ab.y(), 0.0, at.x(), at.y(), 0.0);
       }
-      if (const dBodyID a = world_->body(pair.body_a); a != nullptr) {
+      if (const dBodyID a = world_->body(cp.body_a); a != nullptr) {
         dBodyAddForceAtPos(a, -f * pc.normal_ab.x(), -f * pc.normal_ab.y(), 0.0, at.x(), at.y(),
                            0.0);
       }
     } else if (oracle_) {
-      add_oracle_joint(p);
+      add_oracle_joint(e);
     } else {
-      add_native_joints(p);
+      add_native_joints(e);
     }
+    rows += joints_[e].count;
   }
 
   if (quick_) {
@@ -427,26 +443,35 @@ void OdeEngine::step_once() {
   ++steps_;
 
   // native, oracle: the force the contact joints applied over the step; f1 is
-  // the world-frame force on g1's body, the normal points into g1
+  // the world-frame force on g1's body, the normal points into g1. A pair
+  // without joints this step had no force.
   if (!inject_) {
-    for (std::size_t p = 0; p < pairs; ++p) {
-      double f = 0.0;  // N
+    for (const int p : forced_) {
+      track_[static_cast<std::size_t>(p)].force_n = 0.0;
+      track_[static_cast<std::size_t>(p)].tangential_force_n = 0.0;
+    }
+    forced_.clear();
+    for (std::size_t e = 0; e < now_.pairs.size(); ++e) {
+      const PairContact& pc = now_.pairs[e];
+      double f = 0.0;   // N
       double ft = 0.0;  // N, on body_b along t
-      // f1 acts on g1's body: body_a's when a moves, else body_b's
-      // (ode_pair_contact.cpp); the joint's force on b is then -f1 or f1
-      const double on_b = world_->body(case_.contacts[p].body_a) != nullptr ? -1.0 : 1.0;
-      const Vec2 t = contact_tangent(now_[p].normal_ab);
-      for (int i = 0; i < joints_made_[p]; ++i) {
-        const std::size_t row = p * feedback_per_pair_ + static_cast<std::size_t>(i);
+      // f1 acts on g1's body; the joint's force on b is then -f1 (g1 is
+      // body_a's geom) or f1
+      const double on_b = pc.g1_is_a ? -1.0 : 1.0;
+      const Vec2 t = contact_tangent(pc.normal_ab);
+      for (int i = 0; i < joints_[e].count; ++i) {
+        const auto row = static_cast<std::size_t>(joints_[e].first + i);
         const dJointFeedback& fb = feedback_[row];
-        const int k = oracle_ ? now_[p].deepest : i;
-        const dReal* n = now_[p].geoms[static_cast<std::size_t>(k)].normal;
+        const int k = oracle_ ? pc.deepest : i;
+        const dReal* n = now_.geom(pc, k).normal;
         // the row's force and, with friction, its explicit damping (add_native_joints)
         f += std::max(0.0, fb.f1[0] * n[0] + fb.f1[1] * n[1] + fb.f1[2] * n[2] + explicit_n_[row]);
         ft += on_b * (fb.f1[0] * t.x() + fb.f1[1] * t.y());
       }
-      track_[p].force_n = f;
-      track_[p].tangential_force_n = ft;
+      PairTrack& tr = track_[static_cast<std::size_t>(pc.pair)];
+      tr.force_n = f;
+      tr.tangential_force_n = ft;
+      forced_.push_back(pc.pair);
     }
     dJointGroupEmpty(world_->contact_group());
   }
@@ -475,38 +500,58 @@ void OdeEngine::step_once() {
 // current state, which the next step applies.
 void OdeEngine::sample_contacts() {
   collider_->collide(now_);
+  if (track_.size() < static_cast<std::size_t>(pairs_->size())) {
+    track_.resize(static_cast<std::size_t>(pairs_->size()));
+  }
+  // the pairs touching now and those in contact at the last sample, in
+  // ascending pair index (both lists are): the tracker sees them in one order
+  visit_.clear();
+  constexpr int kNone = std::numeric_limits<int>::max();
+  for (std::size_t a = 0, b = 0; a < now_.pairs.size() || b < in_contact_.size();) {
+    const int pa = a < now_.pairs.size() ? now_.pairs[a].pair : kNone;
+    const int pb = b < in_contact_.size() ? in_contact_[b] : kNone;
+    if (pa <= pb) {
+      visit_.emplace_back(pa, static_cast<int>(a++));
+      if (pa == pb) ++b;
+    } else {
+      visit_.emplace_back(pb, -1);
+      ++b;
+    }
+  }
+  in_contact_.clear();
   const double t = time();
-  for (std::size_t p = 0; p < now_.size(); ++p) {
-    const PairContact& pc = now_[p];
-    PairTrack& tr = track_[p];
-    const ContactPair& pair = case_.contacts[p];
-    const bool in = pc.touching && pc.depth_m > 0.0;
+  for (const auto& [p, e] : visit_) {
+    const PairContact* pc = e >= 0 ? &now_.pairs[static_cast<std::size_t>(e)] : nullptr;
+    PairTrack& tr = track_[static_cast<std::size_t>(p)];
+    const ContactPair& cp = pair(p);
+    const bool in = pc != nullptr && pc->depth_m > 0.0;
     // eq. 7's delta_dot^-: the approach speed at the first sample with delta > 0
-    if (in && !tr.in_contact) tr.latched_approach_mps = std::max(pc.approach_speed_mps, 0.0);
+    if (in && !tr.in_contact) tr.latched_approach_mps = std::max(pc->approach_speed_mps, 0.0);
     if (inject_) {
-      tr.force_n = pc.touching ? contact_force_n(pair.law, pc.depth_m, pc.approach_speed_mps,
-                                                 tr.latched_approach_mps)
-                               : 0.0;
+      tr.force_n = pc != nullptr ? contact_force_n(cp.law, pc->depth_m, pc->approach_speed_mps,
+                                                   tr.latched_approach_mps)
+                                 : 0.0;
     }
     if (in) {
       if (!tr.in_contact && steps_ > 0) {
         // the step before: not in contact; its penetration is estimated from
         // this one and the approach speed so that the onset is interpolated
-        tracker_.observe(t - step_s_, pair.body_a, pair.body_b,
-                         std::min(0.0, pc.depth_m - step_s_ * pc.approach_speed_mps),
-                         pc.approach_speed_mps, 0.0);
+        tracker_.observe(t - step_s_, cp.body_a, cp.body_b,
+                         std::min(0.0, pc->depth_m - step_s_ * pc->approach_speed_mps),
+                         pc->approach_speed_mps, 0.0);
       }
-      tracker_.observe(t, pair.body_a, pair.body_b, pc.depth_m, pc.approach_speed_mps, tr.force_n);
-      tr.depth_m = pc.depth_m;
-      tr.speed_mps = pc.approach_speed_mps;
-      tr.normal_ab = pc.normal_ab;
-      tr.point_m = pc.point_m;
+      tracker_.observe(t, cp.body_a, cp.body_b, pc->depth_m, pc->approach_speed_mps, tr.force_n);
+      tr.depth_m = pc->depth_m;
+      tr.speed_mps = pc->approach_speed_mps;
+      tr.normal_ab = pc->normal_ab;
+      tr.point_m = pc->point_m;
+      in_contact_.push_back(p);
     } else if (tr.in_contact) {
       // separated during the last step: ODE gives no distance, so estimate
       // the (non-positive) penetration from the last one and the speeds
-      const double s = internal::ode::approach_speed_mps(*world_, pair, tr.point_m, tr.normal_ab);
+      const double s = internal::ode::approach_speed_mps(*world_, cp, tr.point_m, tr.normal_ab);
       const double d = std::min(0.0, tr.depth_m + 0.5 * step_s_ * (tr.speed_mps + s));
-      tracker_.observe(t, pair.body_a, pair.body_b, d, s, tr.force_n);
+      tracker_.observe(t, cp.body_a, cp.body_b, d, s, tr.force_n);
     }
     tr.in_contact = in;
   }
@@ -524,14 +569,14 @@ void OdeEngine::body_states(std::vector<BodyState>& out) const {
 
 void OdeEngine::contacts(std::vector<ContactSample>& out) const {
   out.clear();
-  for (std::size_t p = 0; p < now_.size(); ++p) {
-    const PairContact& pc = now_[p];
-    if (!(pc.touching && pc.depth_m > 0.0)) continue;
+  for (const PairContact& pc : now_.pairs) {
+    if (!(pc.depth_m > 0.0)) continue;
+    const PairTrack& tr = track_[static_cast<std::size_t>(pc.pair)];
     ContactSample s;
-    s.body_a = case_.contacts[p].body_a;
-    s.body_b = case_.contacts[p].body_b;
-    s.force_n = track_[p].force_n;
-    s.tangential_force_n = track_[p].tangential_force_n;
+    s.body_a = pair(pc.pair).body_a;
+    s.body_b = pair(pc.pair).body_b;
+    s.force_n = tr.force_n;
+    s.tangential_force_n = tr.tangential_force_n;
     s.penetration_m = pc.depth_m;
     s.normal = pc.normal_ab;
     s.point_m = pc.point_m;

@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -15,8 +16,10 @@
 #include "ode_library.hpp"
 #include "ode_pair_contact.hpp"
 #include "ode_probe.hpp"
+#include "ode_space_collider.hpp"
 #include "ode_settings.hpp"
 #include "ode_world.hpp"
+#include "planarbench/contact_pairs.hpp"
 #include "planarbench/engine.hpp"
 #include "planarbench/episode_tracker.hpp"
 
@@ -82,10 +85,14 @@ class OdeEngine final : public Engine {
   // a fresh mapping with the fields every mode records, then the mode writes its own
   void start_mapping();
   void add_common_mapping();
-  void add_native_joints(std::size_t p);
+  [[nodiscard]] nlohmann::json native_rule_json(const ContactLaw& law, double friction) const;
+  [[nodiscard]] nlohmann::json bodies_json() const;
+  [[nodiscard]] std::string collision_text() const;
+  [[nodiscard]] const ContactPair& pair(int p) const { return (*pairs_)[p]; }
+  void add_native_joints(std::size_t e);
   [[nodiscard]] double separation_speed_mps(const dContactGeom& g) const;
   void add_normal_force(const dContactGeom& g, double f_n) const;
-  void add_oracle_joint(std::size_t p);
+  void add_oracle_joint(std::size_t e);
   void step_once();
   [[nodiscard]] bool injected_forces_run_away();
   void sample_contacts();
@@ -95,14 +102,25 @@ class OdeEngine final : public Engine {
 
   Case case_;
   std::unique_ptr<OdeWorld> world_;
-  std::unique_ptr<PairCollider> collider_;
-  std::vector<PairContact> now_;  // ODE's contacts at the current state
-  std::vector<PairTrack> track_;
-  std::vector<SoftContact> soft_;  // oracle mode, per pair
-  std::vector<dJointFeedback> feedback_;  // per contact joint: pair p owns [p * cap, (p+1) * cap)
+  // the run's pairs: the declared ones, then a scene's as ODE's broad phase
+  // reports them (every vector below indexed by pair grows with it)
+  std::unique_ptr<ContactPairs> pairs_;
+  std::unique_ptr<Collider> collider_;
+  StepContacts now_;               // ODE's contacts at the current state
+  std::vector<PairTrack> track_;   // per pair
+  std::vector<int> in_contact_;    // pairs in contact at the current sample, ascending
+  std::vector<int> forced_;        // pairs whose force the last step set
+  std::vector<std::pair<int, int>> visit_;  // scratch: (pair, entry of now_.pairs or -1)
+  std::vector<SoftContact> soft_;  // oracle mode, per (declared) pair
+  // this step's contact joints: entry e of now_.pairs owns rows [first, first + count) of
+  // feedback_ and explicit_n_, a pool as large as the state's contacts
+  struct JointRange {
+    int first = 0;
+    int count = 0;
+  };
+  std::vector<JointRange> joints_;
+  std::vector<dJointFeedback> feedback_;  // per contact joint of the step
   std::vector<double> explicit_n_;  // per contact joint, like feedback_: its explicit damping force, N
-  std::vector<int> joints_made_;   // per pair: contact joints made this step
-  std::size_t feedback_per_pair_ = 0;
   std::vector<double> angle_rad_;  // continuous angles, per body
   std::vector<Vec2> force_n_;      // inject mode: total force per body this step, N
   std::vector<double> torque_nm_;  // inject mode: about the centre of mass, N m

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <variant>
+#include <vector>
 
 #include "ode_engine_impl.hpp"
 #include "ode_friction.hpp"
@@ -185,14 +186,89 @@ void OdeEngine::map_contacts_oracle(const std::vector<FirstTouch>& touches) {
       "positions under constant acceleration lead the exact parabola by g h t / 2; orientation "
       "by ODE's default infinitesimal update, 2 atan(omega h / 2) per step instead of omega h";
   mapping_["collision"] =
-      "dSimpleSpace + dSpaceCollide; the near callback keeps the case's contact pairs only and "
-      "calls dCollide; of its contacts the deepest one is kept (a prism reports each vertex on "
-      "both faces, and several soft contacts would add their springs)";
+      "dCollide called directly on each declared pair's geoms (no space traversal); of its "
+      "contacts the deepest one is kept (a prism reports each vertex on both faces, and several "
+      "soft contacts would add their springs)";
   add_common_mapping();
 }
 
-// native and inject: the rule of every pair (no probe: nothing is known of
-// the run's future), and mapping_["contacts"]
+// native and inject: how one rule's law (a declared pair's or a group's)
+// becomes ODE contacts
+nlohmann::json OdeEngine::native_rule_json(const ContactLaw& law, double friction) const {
+  nlohmann::json jp = nlohmann::json::object();
+  if (inject_) {
+    jp["expressed_as"] =
+        "no ODE contact joint: the case's law (contact_force_n) evaluated every step at the "
+        "pair's penetration (its deepest contact) and applied with dBodyAddForceAtPos at the "
+        "depth-weighted centroid of its contacts along the deepest contact's normal, equal and "
+        "opposite; Lankarani-Nikravesh latches delta_dot at onset";
+    jp["not_expressed"] = nlohmann::json::array(
+        {"the force is explicit over each step (semi-implicit Euler of ODE's integrator)"});
+    return jp;
+  }
+  jp["expressed_as"] = fmt::format(
+      "every contact dCollide reports for the pair (every convex piece of either body) is an "
+      "ODE contact joint, mode = dContactSoftERP | dContactSoftCFM, {}, no "
+      "dContactBounce; the row's lambda >= 0 is the clamp F >= 0",
+      friction > 0.0 ? "mu: Coulomb (friction)" : "mu = 0 (frictionless)");
+  jp["law_per_step"] = fmt::format(
+      "each step, from the contacts dCollide reported at the state: delta = the deepest "
+      "contact's depth, (k, c) = the law at delta as a linear spring-damper ({}); contact i "
+      "(depth d_i) gets k_i = k delta / sum d_j and c_i = c d_i / sum d_j, so the rows' springs "
+      "sum to k delta and their dampers to c, both at the depth-weighted centroid of the "
+      "contacts (SPEC §1, one force per pair)",
+      std::holds_alternative<KelvinVoigt>(law)
+          ? "Kelvin-Voigt: its own K and c (c times the ramp's cubic step at delta)"
+      : std::holds_alternative<Hertz>(law)
+          ? "Hertz: k = K delta^(n-1), c = 0"
+          : "Lankarani-Nikravesh: k = K delta^(n-1), c = K delta^n 3 (1 - e^2) / 4 / "
+            "delta_dot^-, delta_dot^- the approach speed at the first step with delta > 0");
+  nlohmann::json soft = {
+      {"rule",
+       fmt::format(
+           "ERP = h k_i / (h k_i + c'), CFM = 1 / (h k_i + c'), h = {} s, damping_mapping = "
+           "{}{}",
+           step_s_, settings_.damping_mapping,
+           corrected_
+               ? ": c' = c_i - h k_i removes backward Euler's extra damping h k_i while "
+                 "c_i >= h k_i; where c_i < h k_i it is clamped at c' = 0 and the contact "
+                 "damps like h k_i (counted in damping_correction; for "
+                 "Lankarani-Nikravesh c / k = 3 (1 - e^2) delta / (4 delta_dot^-), so this "
+                 "holds only once delta >= 4 h delta_dot^- / (3 (1 - e^2)))"
+               : ": backward Euler adds about h k_i of damping")}};
+  if (is_plain_kelvin_voigt(law)) {
+    // a linear law's numbers for one contact (a sphere on a plane): fixed
+    const auto& kv = std::get<KelvinVoigt>(law);
+    const SoftContact one = internal::ode::soft_contact(kv.stiffness_n_per_m, kv.damping_ns_per_m,
+                                                        step_s_, corrected_);
+    soft["one_contact"] = {{"erp", one.erp},
+                           {"cfm_m_per_ns", one.cfm},
+                           {"damping_used_ns_per_m", one.damping_used_ns_per_m},
+                           {"numerical_damping_hk_ns_per_m", one.numerical_damping_ns_per_m},
+                           {"correction_valid", one.correction_valid},
+                           {"note", one.note}};
+  }
+  jp["soft_contact"] = soft;
+  nlohmann::json lost = nlohmann::json::array();
+  if (!std::holds_alternative<KelvinVoigt>(law)) {
+    lost.push_back(
+        "within a step the law is linear in delta: the nonlinear stiffness is its secant at "
+        "the step's start");
+  }
+  jp["not_expressed"] = lost;
+  if (friction > 0.0) {
+    jp["friction"] = internal::ode::friction_mapping(friction);
+    jp["friction"]["face_rows"] =
+        "with friction every pressed row of the pair takes the implicit damping c / n (n rows: "
+        "one CFM for all, so dWorldStep's friction bounds follow the spread law's shares) and "
+        "the rest of its share, c_i - c / n, as a force applied before the step along its "
+        "normal from its separation speed (ode_contact_mapping.hpp, face_row)";
+  }
+  return jp;
+}
+
+// native and inject: the rule of every declared pair and every contact group
+// (no probe: nothing is known of the run's future), and mapping_["contacts"]
 void OdeEngine::map_contacts_native() {
   nlohmann::json pairs = nlohmann::json::array();
   for (const ContactPair& pair : case_.contacts) {
@@ -204,79 +280,7 @@ void OdeEngine::map_contacts_native() {
         {"threshold",
          fmt::format("not expressed: ODE reports a contact from depth >= 0 (case threshold {} m)",
                      pair.threshold_m)}};
-    if (inject_) {
-      jp["expressed_as"] =
-          "no ODE contact joint: the case's law (contact_force_n) evaluated every step at the "
-          "pair's penetration (its deepest contact) and applied with dBodyAddForceAtPos at the "
-          "depth-weighted centroid of its contacts along the deepest contact's normal, equal and "
-          "opposite; Lankarani-Nikravesh latches delta_dot at onset";
-      jp["not_expressed"] = nlohmann::json::array(
-          {"the force is explicit over each step (semi-implicit Euler of ODE's integrator)"});
-    } else {
-      jp["expressed_as"] = fmt::format(
-          "every contact dCollide reports for the pair (every convex piece of either body) is an "
-          "ODE contact joint, mode = dContactSoftERP | dContactSoftCFM, {}, no "
-          "dContactBounce; the row's lambda >= 0 is the clamp F >= 0",
-          pair.has_friction() ? "mu: Coulomb (friction)" : "mu = 0 (frictionless)");
-      jp["law_per_step"] = fmt::format(
-          "each step, in the near callback's pass: delta = the deepest contact's depth, "
-          "(k, c) = the law at delta as a linear spring-damper ({}); contact i (depth d_i) gets "
-          "k_i = k delta / sum d_j and c_i = c d_i / sum d_j, so the rows' springs sum to "
-          "k delta and their dampers to c, both at the depth-weighted centroid of the contacts "
-          "(SPEC §1, one force per pair)",
-          std::holds_alternative<KelvinVoigt>(pair.law)
-              ? "Kelvin-Voigt: its own K and c (c times the ramp's cubic step at delta)"
-          : std::holds_alternative<Hertz>(pair.law)
-              ? "Hertz: k = K delta^(n-1), c = 0"
-              : "Lankarani-Nikravesh: k = K delta^(n-1), c = K delta^n 3 (1 - e^2) / 4 / "
-                "delta_dot^-, delta_dot^- the approach speed at the first step with delta > 0");
-      nlohmann::json soft = {
-          {"rule",
-           fmt::format(
-               "ERP = h k_i / (h k_i + c'), CFM = 1 / (h k_i + c'), h = {} s, damping_mapping = "
-               "{}{}",
-               step_s_, settings_.damping_mapping,
-               corrected_
-                   ? ": c' = c_i - h k_i removes backward Euler's extra damping h k_i while "
-                     "c_i >= h k_i; where c_i < h k_i it is clamped at c' = 0 and the contact "
-                     "damps like h k_i (counted in damping_correction; for "
-                     "Lankarani-Nikravesh c / k = 3 (1 - e^2) delta / (4 delta_dot^-), so this "
-                     "holds only once delta >= 4 h delta_dot^- / (3 (1 - e^2)))"
-                   : ": backward Euler adds about h k_i of damping")}};
-      if (is_plain_kelvin_voigt(pair.law)) {
-        // a linear law's numbers for one contact (a sphere on a plane): fixed
-        const auto& kv = std::get<KelvinVoigt>(pair.law);
-        const SoftContact one =
-            internal::ode::soft_contact(kv.stiffness_n_per_m, kv.damping_ns_per_m, step_s_,
-                                        corrected_);
-        soft["one_contact"] = {{"erp", one.erp},
-                               {"cfm_m_per_ns", one.cfm},
-                               {"damping_used_ns_per_m", one.damping_used_ns_per_m},
-                               {"numerical_damping_hk_ns_per_m", one.numerical_damping_ns_per_m},
-                               {"correction_valid", one.correction_valid},
-                               {"note", one.note}};
-      }
-      jp["soft_contact"] = soft;
-      nlohmann::json lost = nlohmann::json::array();
-      if (!std::holds_alternative<KelvinVoigt>(pair.law)) {
-        lost.push_back(
-            "within a step the law is linear in delta: the nonlinear stiffness is its secant at "
-            "the step's start");
-      }
-      if (case_.bodies[static_cast<std::size_t>(pair.body_a)].fixed ||
-          case_.bodies[static_cast<std::size_t>(pair.body_b)].fixed) {
-        // nothing more to say
-      }
-      jp["not_expressed"] = lost;
-      if (pair.has_friction()) {
-        jp["friction"] = internal::ode::friction_mapping(pair.friction);
-        jp["friction"]["face_rows"] =
-            "with friction every pressed row of the pair takes the implicit damping c / n (n rows: "
-            "one CFM for all, so dWorldStep's friction bounds follow the spread law's shares) and "
-            "the rest of its share, c_i - c / n, as a force applied before the step along its "
-            "normal from its separation speed (ode_contact_mapping.hpp, face_row)";
-      }
-    }
+    jp.update(native_rule_json(pair.law, pair.friction));
     pairs.push_back(jp);
   }
   start_mapping();
@@ -284,12 +288,94 @@ void OdeEngine::map_contacts_native() {
       substeps_ == 1 ? std::string("none: ODE steps at dt, the step given")
                      : fmt::format("set by ode.substeps: {} steps per dt", substeps_);
   mapping_["contacts"] = pairs;
-  mapping_["collision"] =
-      "dSimpleSpace + dSpaceCollide; the near callback keeps the case's contact pairs only and "
-      "calls dCollide on each pair of their geoms (convex pieces); one contact is kept per "
-      "point of the plane (a prism reports each vertex on both faces, and a vertex two convex "
-      "pieces share once per piece: ode_pair_contact.cpp), the law spread over their depths";
+  if (case_.has_contact_groups()) {
+    nlohmann::json groups = nlohmann::json::array();
+    for (const ContactGroup& g : case_.contact_groups) {
+      nlohmann::json jg = {
+          {"group", g.name},
+          {"bodies", g.bodies.size()},
+          {"case_law", law_json(g.law)},
+          {"threshold",
+           fmt::format("not expressed: ODE reports a contact from depth >= 0 (case threshold {} m)",
+                       g.threshold_m)}};
+      jg.update(native_rule_json(g.law, g.friction));
+      groups.push_back(jg);
+    }
+    mapping_["contact_groups"] = groups;
+  }
   add_common_mapping();
+}
+
+// native and inject: how ODE finds the contacts (needs the world: a
+// scene's hash levels)
+std::string OdeEngine::collision_text() const {
+  if (case_.has_contact_groups()) {
+    return fmt::format(
+        "ODE's broad phase: every geom in one dSweepAndPruneSpace sorted along {} (the axis "
+        "the moving bodies spread over most at the start; planes, infinite boxes, are tested "
+        "against every geom), each geom's category and collide bits = its body's groups "
+        "(bit g % 63) and bit 63 for a body of a declared pair; dSpaceCollide calls the near "
+        "callback for the geom pairs whose boxes overlap, which skips two fixed bodies and the "
+        "pairs no rule lets touch (ContactPairs::may_touch), calls dCollide (g1 the moving "
+        "geom, else the lower body's), and registers the pair (ContactPairs::find_or_add) when "
+        "ODE reports a contact; one contact is kept per point of the plane "
+        "(ode_pair_contact.cpp), the law spread over their depths; the joints are made in "
+        "ascending pair index",
+        world_->sweep_axes());
+  }
+  return "dCollide called directly on each declared pair's geoms, every convex piece of one "
+         "body against every piece of the other, in the case's pair order (no space traversal: "
+         "the geoms sit in a dSimpleSpace never collided); one contact is kept per point of the "
+         "plane (a prism reports each vertex on both faces, and a vertex two convex pieces share "
+         "once per piece: ode_pair_contact.cpp), the law spread over their depths";
+}
+
+// what the bodies became; a [[generate]] set is one entry (its bodies share
+// shape, mass and constraint; a 1000-body scene's mapping stays short)
+nlohmann::json OdeEngine::bodies_json() const {
+  std::vector<int> set_of(case_.bodies.size(), -1);
+  for (std::size_t g = 0; g < case_.generated.size(); ++g) {
+    const GeneratedBodies& gen = case_.generated[g];
+    for (int k = 0; k < gen.count; ++k) {
+      set_of[static_cast<std::size_t>(gen.body(k))] = static_cast<int>(g);
+    }
+  }
+  nlohmann::json bodies = nlohmann::json::array();
+  for (std::size_t i = 0; i < case_.bodies.size(); ++i) {
+    const Body& b = case_.bodies[i];
+    std::string name = b.name;
+    if (set_of[i] >= 0) {
+      const GeneratedBodies& gen = case_.generated[static_cast<std::size_t>(set_of[i])];
+      if (static_cast<int>(i) != gen.first_body) continue;
+      name = fmt::format("{} .. {} ({} generated)", b.name,
+                         case_.bodies[static_cast<std::size_t>(gen.body(gen.count - 1))].name,
+                         gen.count);
+    }
+    std::string held = "fixed: a static geom without body";
+    if (!b.fixed) {
+      held =
+          "Plane2D joint keeps z = 0; the orientation's drift is reset to a pure z rotation "
+          "after every step";
+      for (const RevoluteJoint& j : case_.joints) {
+        if (j.body == static_cast<int>(i)) {
+          held = fmt::format("hinge to the world about z through ({}, {}) m (no Plane2D needed)",
+                             j.anchor_world_m.x(), j.anchor_world_m.y());
+        }
+      }
+    }
+    nlohmann::json jb = {{"body", name},
+                         {"geom", world_->geom_description(static_cast<int>(i))},
+                         {"constraint", held}};
+    if (!b.fixed) {
+      jb["mass"] = fmt::format(
+          "dMassSetParameters: m = {} kg, centre of mass at the body origin, "
+          "I_xx = I_yy = I_zz = {} kg m^2 (the case's planar inertia; the "
+          "out-of-plane entries never act)",
+          b.mass_kg, b.inertia_kgm2);
+    }
+    bodies.push_back(jb);
+  }
+  return bodies;
 }
 
 void OdeEngine::start_mapping() {
@@ -318,6 +404,12 @@ void OdeEngine::add_common_mapping() {
 
 nlohmann::json OdeEngine::extra_attributes() const {
   nlohmann::json x = extra_;
+  x["stepper"] = quick_ ? "dWorldQuickStep" : "dWorldStep";
+  if (case_.has_contact_groups() && pairs_) {
+    // the pairs ODE's broad phase reported a contact for (per-pair state
+    // grows with these), of the n (n - 1) / 2 a group could form
+    x["pairs_registered"] = pairs_->size();
+  }
   if (messages_seen_ > 0) {
     x["ode_messages_noted"] = {
         {"count", messages_seen_},

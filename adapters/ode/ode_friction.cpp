@@ -22,8 +22,9 @@ nlohmann::json friction_mapping(double mu) {
            "friction direction, the in-plane tangent (dContactFDir1), and no second one "
            "(dContactMu2, mu2 = 0: it would lie along z, held by Plane2D)"},
           {"stepper_note",
-           "dWorldStep (default) bounds each friction row by mu times the normal force the LCP "
-           "solved before friction acts; dWorldQuickStep by the current iterate's"},
+           "dWorldStep (the default for declared pairs) bounds each friction row by mu times "
+           "the normal force the LCP solved before friction acts; dWorldQuickStep (the default "
+           "for a scene) by the current iterate's"},
           {"not_expressed",
            nlohmann::json::array({"a stuck contact creeps at world CFM (1e-10) x its friction "
                                   "force per newton, ~1e-10 m/s"})}};

@@ -90,15 +90,53 @@ dGeomID create_shape_geom(dSpaceID space, const Body& body, ConvexPrism& prism) 
                        prism.point_count, prism.polygons.data());
 }
 
+std::optional<Vec2> centred_rectangle_half_sides(const std::vector<Vec2>& points) {
+  if (points.size() != 4) return std::nullopt;
+  double a = 0.0;
+  double b = 0.0;
+  for (const Vec2& q : points) {
+    a = std::max(a, std::abs(q.x()));
+    b = std::max(b, std::abs(q.y()));
+  }
+  if (!(a > 0.0 && b > 0.0)) return std::nullopt;
+  int quadrants = 0;  // one corner in each: bit (x > 0) + 2 (y > 0)
+  for (const Vec2& q : points) {
+    if (std::abs(std::abs(q.x()) - a) > 1e-12 * a || std::abs(std::abs(q.y()) - b) > 1e-12 * b) {
+      return std::nullopt;
+    }
+    quadrants |= 1 << ((q.x() > 0.0 ? 1 : 0) + (q.y() > 0.0 ? 2 : 0));
+  }
+  if (quadrants != 0xf) return std::nullopt;
+  return Vec2(a, b);
+}
+
 ShapeGeoms create_shape_geoms(dSpaceID space, const Body& body,
-                              std::vector<std::unique_ptr<ConvexPrism>>& prisms) {
+                              std::vector<std::unique_ptr<ConvexPrism>>& prisms,
+                              bool rectangles_as_boxes) {
   ShapeGeoms out;
   const auto* polygon = std::get_if<Polygon>(&body.shape);
+  if (rectangles_as_boxes && polygon != nullptr) {
+    if (const auto half = centred_rectangle_half_sides(polygon->points_m)) {
+      const double w = prism_half_depth(polygon->points_m);
+      out.geoms.push_back(dCreateBox(space, 2.0 * half->x(), 2.0 * half->y(), 2.0 * w));
+      out.offsets_m.push_back(Vec2::Zero());
+      out.vertices = 8;
+      out.description = fmt::format(
+          "dCreateBox {} x {} x {} m (the rectangle, z in [-{}, {}] m): ODE's box colliders "
+          "(box-plane, box-box: the corners of the face in contact); a prism pressed face to "
+          "face on a prism gets one contact from ODE's convex-convex collider",
+          2.0 * half->x(), 2.0 * half->y(), 2.0 * w, w, w);
+      return out;
+    }
+  }
   if (polygon == nullptr || is_convex_ccw(polygon->points_m)) {
     auto prism = std::make_unique<ConvexPrism>();
     out.geoms.push_back(create_shape_geom(space, body, *prism));
     out.offsets_m.push_back(Vec2::Zero());
     out.description = describe_shape_geom(body, *prism);
+    out.vertices = std::holds_alternative<Circle>(body.shape)
+                       ? 1
+                       : static_cast<int>(prism->point_count);
     prisms.push_back(std::move(prism));
     return out;
   }
@@ -116,6 +154,7 @@ ShapeGeoms create_shape_geoms(dSpaceID space, const Body& body,
     out.geoms.push_back(dCreateConvex(space, prism->planes.data(), prism->plane_count,
                                       prism->points.data(), prism->point_count,
                                       prism->polygons.data()));
+    out.vertices += static_cast<int>(prism->point_count);
     prisms.push_back(std::move(prism));
   }
   out.description = fmt::format(

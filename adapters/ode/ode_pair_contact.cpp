@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <variant>
 
 #include <fmt/format.h>
 
@@ -13,19 +14,6 @@ namespace {
 
 // a convex prism of n outline points reports at most 2n vertices
 constexpr int kMinContactBuffer = 16;
-
-// contacts dCollide may give for one geom pair, and for one case pair (every
-// piece of one body against every piece of the other)
-int geom_pair_capacity(const Case& c) {
-  int most = kMinContactBuffer;
-  for (const Body& b : c.bodies) {
-    const int pts = std::holds_alternative<Polygon>(b.shape)
-                        ? static_cast<int>(std::get<Polygon>(b.shape).points_m.size())
-                        : b.outline_points;
-    most = std::max(most, 2 * pts + 4);
-  }
-  return std::min(most, 0xffff);  // dCollide's flags carry the count in 16 bits
-}
 
 Vec2 point_velocity(dBodyID b, const Vec2& p) {
   if (b == nullptr) return Vec2::Zero();
@@ -48,9 +36,9 @@ Vec2 point_velocity(dBodyID b, const Vec2& p) {
 // restitution of 1.7). The normal law is spread over the contacts kept, so
 // the pair's force is the same. 1e-9 m: far below a prism's smallest edge,
 // far above rounding.
-bool in_plane_duplicate(const PairContact& out, const dContactGeom& c) {
-  for (int k = 0; k < out.count; ++k) {
-    const dContactGeom& d = out.geoms[static_cast<std::size_t>(k)];
+bool in_plane_duplicate(const StepContacts& out, const PairContact& pc, const dContactGeom& c) {
+  for (int k = 0; k < pc.count; ++k) {
+    const dContactGeom& d = out.geom(pc, k);
     if (std::abs(d.pos[0] - c.pos[0]) <= 1e-9 && std::abs(d.pos[1] - c.pos[1]) <= 1e-9) {
       return true;
     }
@@ -59,6 +47,44 @@ bool in_plane_duplicate(const PairContact& out, const dContactGeom& c) {
 }
 
 }  // namespace
+
+int geom_pair_capacity(const Case& c) {
+  int most = kMinContactBuffer;
+  for (const Body& b : c.bodies) {
+    const int pts = std::holds_alternative<Polygon>(b.shape)
+                        ? static_cast<int>(std::get<Polygon>(b.shape).points_m.size())
+                        : b.outline_points;
+    most = std::max(most, 2 * pts + 4);
+  }
+  return std::min(most, 0xffff);  // dCollide's flags carry the count in 16 bits
+}
+
+long pair_contact_bound(int vertices_a, int vertices_b) {
+  return 2L * (static_cast<long>(vertices_a) + vertices_b) + kMinContactBuffer;
+}
+
+bool flatten_to_plane(dContactGeom& c) {
+  c.pos[2] = 0.0;
+  c.normal[2] = 0.0;
+  const double len = std::hypot(c.normal[0], c.normal[1]);
+  if (!(len > 0.0)) return false;
+  c.normal[0] /= len;
+  c.normal[1] /= len;
+  return true;
+}
+
+void keep_contact(const dContactGeom& c, long bound, const std::string& pair_name,
+                  StepContacts& out, PairContact& pc) {
+  if (in_plane_duplicate(out, pc, c)) return;
+  if (pc.count >= bound) {
+    throw EngineError(fmt::format(
+        "ode: pair '{}' has more than {} contacts in one step, the bound 2 (V_a + V_b) + {} "
+        "of its geoms' vertices (prisms 2 n, spheres and planes 1)",
+        pair_name, bound, kMinContactBuffer));
+  }
+  out.geoms.push_back(c);
+  ++pc.count;
+}
 
 Vec2 contact_midpoint(const dContactGeom& g) {
   const int c1 = dGeomGetClass(g.g1);
@@ -73,6 +99,8 @@ Vec2 contact_midpoint(const dContactGeom& g) {
   } else if ((c1 == dConvexClass && c2 == dPlaneClass) ||
              (c1 == dPlaneClass && c2 == dConvexClass)) {
     owner_class = dConvexClass;
+  } else if ((c1 == dBoxClass && c2 == dPlaneClass) || (c1 == dPlaneClass && c2 == dBoxClass)) {
+    owner_class = dBoxClass;  // dCollideBoxPlane: pos is the box's vertex
   } else {
     return pos;
   }
@@ -85,107 +113,78 @@ Vec2 contact_midpoint(const dContactGeom& g) {
 PairCollider::PairCollider(const Case& c, const OdeWorld& world)
     : case_(&c), world_(&world), buffer_(static_cast<std::size_t>(geom_pair_capacity(c))) {
   for (const ContactPair& cp : c.contacts) {
-    const long bound = pair_contact_bound(world.vertex_count(cp.body_a), world.vertex_count(cp.body_b));
-    capacity_ = static_cast<int>(std::max<long>(capacity_, bound));
+    bounds_.push_back(
+        pair_contact_bound(world.vertex_count(cp.body_a), world.vertex_count(cp.body_b)));
   }
 }
 
-long pair_contact_bound(int vertices_a, int vertices_b) {
-  return 2L * (static_cast<long>(vertices_a) + vertices_b) + kMinContactBuffer;
-}
-
-void PairCollider::collide(std::vector<PairContact>& out) {
-  out.resize(case_->contacts.size());
-  for (PairContact& pc : out) {
-    if (pc.geoms.size() != static_cast<std::size_t>(capacity_)) {
-      pc.geoms.resize(static_cast<std::size_t>(capacity_));
-    }
-    pc.touching = false;
-    pc.count = 0;
-    pc.contacts_reported = 0;
-    pc.deepest = -1;
-  }
-  // the case lists its pairs: dCollide on each of them, every piece of one
-  // body against every piece of the other (ODE's manual: dCollide may be
-  // called directly on two geoms). dSpaceCollide would also find them, after
-  // recomputing every moved geom's bounding box (dxConvex::computeAABB walks
-  // all vertices of a prism: a third of dual_pendulum x ode) to test pairs the
-  // case does not list.
+void PairCollider::collide(StepContacts& out) {
+  out.clear();
   for (std::size_t p = 0; p < case_->contacts.size(); ++p) {
     const ContactPair& cp = case_->contacts[p];
+    PairContact pc;
+    pc.pair = static_cast<int>(p);
+    pc.first = static_cast<int>(out.geoms.size());
+    // g1 must have a body: a contact joint attached to (0, body) is stored
+    // reversed by ODE, and its feedback f1 would then belong to the other side
+    pc.g1_is_a = world_->body(cp.body_a) != nullptr;
     for (const dGeomID g : world_->geoms(cp.body_a)) {
-      for (const dGeomID h : world_->geoms(cp.body_b)) collide_geoms(static_cast<int>(p), g, h, out[p]);
+      for (const dGeomID h : world_->geoms(cp.body_b)) collide_geoms(static_cast<int>(p), g, h, out, pc);
     }
+    if (pc.count == 0) continue;
+    summarise_pair(*world_, cp, out, pc);
+    out.pairs.push_back(pc);
   }
-  for (std::size_t p = 0; p < out.size(); ++p) summarise(static_cast<int>(p), out[p]);
 }
 
-void PairCollider::collide_geoms(int pair, dGeomID g, dGeomID h, PairContact& out) {
+void PairCollider::collide_geoms(int pair, dGeomID g, dGeomID h, StepContacts& out,
+                                 PairContact& pc) {
   const ContactPair& cp = case_->contacts[static_cast<std::size_t>(pair)];
-  const dBodyID body_a = world_->body(cp.body_a);
-  const dBodyID body_b = world_->body(cp.body_b);
-  if (body_a == nullptr && body_b == nullptr) return;  // two fixed bodies never move
-  // g1 must have a body: a contact joint attached to (0, body) is stored
-  // reversed by ODE, and its feedback f1 would then belong to the other side
+  if (world_->body(cp.body_a) == nullptr && world_->body(cp.body_b) == nullptr) {
+    return;  // two fixed bodies never move
+  }
   const bool g_is_a = OdeWorld::body_index_of(g) == cp.body_a;
   const dGeomID geom_a = g_is_a ? g : h;
   const dGeomID geom_b = g_is_a ? h : g;
-  const bool a_first = body_a != nullptr;
-  const dGeomID o1 = a_first ? geom_a : geom_b;
-  const dGeomID o2 = a_first ? geom_b : geom_a;
+  const dGeomID o1 = pc.g1_is_a ? geom_a : geom_b;
+  const dGeomID o2 = pc.g1_is_a ? geom_b : geom_a;
   const int count = dCollide(o1, o2, static_cast<int>(buffer_.size()), buffer_.data(),
                              static_cast<int>(sizeof(dContactGeom)));
-  out.contacts_reported += std::max(count, 0);
+  pc.contacts_reported += std::max(count, 0);
   for (int k = 0; k < count; ++k) {
     dContactGeom c = buffer_[static_cast<std::size_t>(k)];
-    // keep the contact in the plane z = 0
-    c.pos[2] = 0.0;
-    c.normal[2] = 0.0;
-    const double len = std::hypot(c.normal[0], c.normal[1]);
-    if (!(len > 0.0)) continue;  // a normal along z: not a planar contact
-    c.normal[0] /= len;
-    c.normal[1] /= len;
-    if (in_plane_duplicate(out, c)) continue;
-    if (out.count >= capacity_) {
-      throw EngineError(fmt::format(
-          "ode: pair '{}' has more than {} contacts in one step, the bound 2 (V_a + V_b) + {} "
-          "of its geoms' vertices (prisms 2 n, spheres and planes 1) its buffers are sized by",
-          cp.name, capacity_, kMinContactBuffer));
-    }
-    out.geoms[static_cast<std::size_t>(out.count++)] = c;
+    if (!flatten_to_plane(c)) continue;  // a normal along z: not a planar contact
+    keep_contact(c, bounds_[static_cast<std::size_t>(pair)], cp.name, out, pc);
   }
 }
 
-void PairCollider::summarise(int pair, PairContact& out) const {
-  if (out.count == 0) return;
-  const ContactPair& cp = case_->contacts[static_cast<std::size_t>(pair)];
+void summarise_pair(const OdeWorld& world, const ContactPair& cp, const StepContacts& out,
+                    PairContact& pc) {
   int deepest = 0;
   double sum = 0.0;  // m
-  for (int k = 0; k < out.count; ++k) {
-    const dContactGeom& c = out.geoms[static_cast<std::size_t>(k)];
+  for (int k = 0; k < pc.count; ++k) {
+    const dContactGeom& c = out.geom(pc, k);
     sum += c.depth;
-    if (c.depth > out.geoms[static_cast<std::size_t>(deepest)].depth) deepest = k;
+    if (c.depth > out.geom(pc, deepest).depth) deepest = k;
   }
-  const dContactGeom& g = out.geoms[static_cast<std::size_t>(deepest)];
-  out.touching = true;
-  out.deepest = deepest;
-  out.depth_m = g.depth;
-  out.depth_sum_m = sum;
-  // ODE's normal points into g1, i.e. from g2 to g1; g1 is body_a's when a moves
-  const bool a_first = world_->body(cp.body_a) != nullptr;
+  const dContactGeom& g = out.geom(pc, deepest);
+  pc.deepest = deepest;
+  pc.depth_m = g.depth;
+  pc.depth_sum_m = sum;
+  // ODE's normal points into g1, i.e. from g2 to g1
   const Vec2 n_into_g1(g.normal[0], g.normal[1]);
-  out.normal_ab = a_first ? Vec2(-n_into_g1) : n_into_g1;
-  if (out.count == 1 || !(sum > 0.0)) {
-    out.point_m = contact_midpoint(g);
+  pc.normal_ab = pc.g1_is_a ? Vec2(-n_into_g1) : n_into_g1;
+  if (pc.count == 1 || !(sum > 0.0)) {
+    pc.point_m = contact_midpoint(g);
   } else {
     Vec2 moment = Vec2::Zero();  // m^2
-    for (int k = 0; k < out.count; ++k) {
-      const dContactGeom& c = out.geoms[static_cast<std::size_t>(k)];
+    for (int k = 0; k < pc.count; ++k) {
+      const dContactGeom& c = out.geom(pc, k);
       moment += c.depth * contact_midpoint(c);
     }
-    out.point_m = moment / sum;
+    pc.point_m = moment / sum;
   }
-  out.approach_speed_mps = approach_speed_mps(*world_, cp, out.point_m, out.normal_ab);
+  pc.approach_speed_mps = approach_speed_mps(world, cp, pc.point_m, pc.normal_ab);
 }
 
 double approach_speed_mps(const OdeWorld& world, const ContactPair& pair, const Vec2& point_m,

@@ -12,7 +12,7 @@ std::vector<FirstTouch> probe_first_touches(const Case& c, double h, long& steps
   std::vector<FirstTouch> out(c.contacts.size());
   OdeWorld world(c);
   PairCollider collider(c, world);
-  std::vector<PairContact> now;
+  StepContacts now;
 
   // pairs of two fixed bodies never touch: count only the others
   std::size_t waiting = 0;
@@ -24,14 +24,15 @@ std::vector<FirstTouch> probe_first_touches(const Case& c, double h, long& steps
   const auto last_step = static_cast<long>(std::floor(c.duration_s / h + 1e-9));
   for (long k = 0; waiting > 0; ++k) {
     collider.collide(now);
-    for (std::size_t p = 0; p < now.size(); ++p) {
-      if (out[p].found || !now[p].touching) continue;
-      out[p].found = true;
-      out[p].time_s = static_cast<double>(k) * h;
-      out[p].point_m = now[p].point_m;
-      out[p].normal_ab = now[p].normal_ab;
-      out[p].approach_speed_mps = now[p].approach_speed_mps;
-      out[p].centres_m = world.centres();
+    for (const PairContact& pc : now.pairs) {
+      FirstTouch& first = out[static_cast<std::size_t>(pc.pair)];
+      if (first.found) continue;
+      first.found = true;
+      first.time_s = static_cast<double>(k) * h;
+      first.point_m = pc.point_m;
+      first.normal_ab = pc.normal_ab;
+      first.approach_speed_mps = pc.approach_speed_mps;
+      first.centres_m = world.centres();
       --waiting;
     }
     if (waiting == 0 || k >= last_step || world.first_blown_up_body() >= 0) break;

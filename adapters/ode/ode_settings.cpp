@@ -14,9 +14,10 @@ SettingsBinder bind_ode_settings(OdeSettings& s) {
       .integer("contact_steps", &s.contact_steps, 1, 100000,
                "auto substeps (oracle): minimum steps over the first impact's force phase "
                "(default 20)")
-      .choice("stepper", &s.stepper, {"world", "quick"},
-              "world = dWorldStep (direct LCP, default), quick = dWorldQuickStep (SOR, rows "
-              "reordered with a reseeded global RNG)")
+      .choice("stepper", &s.stepper, {"auto", "world", "quick"},
+              "world = dWorldStep (direct LCP), quick = dWorldQuickStep (SOR, rows reordered "
+              "with a reseeded global RNG), auto = world for declared pairs, quick for a scene "
+              "(contact groups) (default)")
       .integer("quick_iterations", &s.quick_iterations, 1, 100000,
                "dWorldQuickStep iterations (default 20, ODE's own default)")
       .choice("damping_mapping", &s.damping_mapping, {"corrected", "textbook"},

@@ -1,8 +1,10 @@
-// The ODE model of a case: one dWorld, one dSpace and one contact joint group
-// per instance, a body per moving case body with its explicit mass and planar
+// The ODE model of a case: one dWorld, one dSpace (a dSweepAndPruneSpace for
+// a scene, whose pairs ODE's broad phase finds; a dSimpleSpace, never
+// traversed, for a case of declared pairs) and one contact joint group per
+// instance, a body per moving case body with its explicit mass and planar
 // inertia, Plane2D for free bodies, a z-axis hinge to the world per revolute
-// joint, and a geom per body. Owns every ODE object and every array ODE
-// points into.
+// joint, and a geom per body (a scene's rectangles as dBoxes). Owns every
+// ODE object and every array ODE points into.
 #pragma once
 
 #include <ode/ode.h>
@@ -47,12 +49,14 @@ class OdeWorld {
   [[nodiscard]] int geom_count(int i) const {
     return static_cast<int>(geoms_[static_cast<std::size_t>(i)].size());
   }
-  // the vertices of body i's geoms: a prism's 2 n (both faces), 1 for a
-  // sphere or a plane (the bound on its contacts, ode_pair_contact.hpp)
+  // the vertices of body i's geoms: a prism's 2 n (both faces), a box's 8,
+  // 1 for a sphere or a plane (the bound on its contacts, ode_pair_contact.hpp)
   [[nodiscard]] int vertex_count(int i) const { return vertex_counts_[static_cast<std::size_t>(i)]; }
   // the case body index of a geom of this world (stored as the geom's data)
   [[nodiscard]] static int body_index_of(dGeomID g);
   [[nodiscard]] int body_count() const { return static_cast<int>(bodies_.size()); }
+  // a scene's sweep and prune axes (scene_space), "" for a simple space
+  [[nodiscard]] const std::string& sweep_axes() const { return sweep_axes_; }
   [[nodiscard]] const std::string& geom_description(int i) const {
     return descriptions_[static_cast<std::size_t>(i)];
   }
@@ -95,6 +99,7 @@ class OdeWorld {
   void build(const Case& c);
   void destroy();
   void set_runaway_bounds();
+  dSpaceID scene_space(const Case& c);
 
   // per body: the runaway bounds (infinite for fixed bodies)
   struct Bounds {
@@ -120,6 +125,7 @@ class OdeWorld {
   std::vector<std::unique_ptr<ConvexPrism>> prisms_;  // stable addresses for dCreateConvex
   std::vector<std::unique_ptr<int>> geom_data_;       // body index behind each geom's data
   std::vector<std::string> descriptions_;
+  std::string sweep_axes_;
 };
 
 }  // namespace pb::internal::ode

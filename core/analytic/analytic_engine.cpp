@@ -27,6 +27,8 @@
 #include "planarbench/build_info.hpp"
 #include "planarbench/errors.hpp"
 #include "planarbench/reference/pair_geometry.hpp"
+#include "disk_row.hpp"
+#include "resting_stack.hpp"
 #include "two_disks_head_on.hpp"
 
 namespace pb {
@@ -102,6 +104,8 @@ class AnalyticEngine final : public Engine {
     binder_.apply(overrides);
     body_.reset();
     disks_.reset();
+    stack_.reset();
+    row_.reset();
     pendulums_.reset();
     numeric_.reset();
     time_s_ = 0.0;
@@ -127,6 +131,12 @@ class AnalyticEngine final : public Engine {
         disks_ = std::make_unique<internal::TwoDisksHeadOn>(c, m.disk, m.line, m.pair);
         disks_->extend_to(c.duration_s);
         break;
+      case internal::ClosedFormKind::resting_stack:
+        stack_ = std::make_unique<internal::RestingStack>(c);
+        break;
+      case internal::ClosedFormKind::disk_row:
+        row_ = std::make_unique<internal::DiskRow>(c);
+        break;
       case internal::ClosedFormKind::pendulums_until_contact:
         pendulums_ = std::make_unique<internal::PendulumsUntilContact>(c);
         pendulums_->extend_to(c.duration_s);
@@ -141,7 +151,7 @@ class AnalyticEngine final : public Engine {
   }
 
   void advance_to(double t_s) override {
-    if (!body_ && !disks_ && !pendulums_ && !numeric_) {
+    if (!body_ && !disks_ && !stack_ && !row_ && !pendulums_ && !numeric_) {
       throw EngineError("analytic: advance_to before build");
     }
     if (!(t_s >= time_s_) || !std::isfinite(t_s)) {
@@ -165,6 +175,8 @@ class AnalyticEngine final : public Engine {
     }
     if (body_) body_->body_states(time_s_, out);
     if (disks_) disks_->body_states(time_s_, out);
+    if (stack_) stack_->body_states(time_s_, out);
+    if (row_) row_->body_states(time_s_, out);
     if (pendulums_) pendulums_->body_states(time_s_, out);
   }
 
@@ -177,11 +189,15 @@ class AnalyticEngine final : public Engine {
     // the pendulums' closed form ends at the first contact: no samples
     if (body_) body_->contacts(time_s_, out);
     if (disks_) disks_->contacts(time_s_, out);
+    if (stack_) stack_->contacts(time_s_, out);
+    if (row_) row_->contacts(time_s_, out);
   }
 
   [[nodiscard]] std::vector<ContactEpisode> episodes() const override {
     if (body_) return body_->episodes(time_s_);
     if (disks_) return disks_->episodes(time_s_);
+    if (stack_) return stack_->episodes(time_s_);
+    if (row_) return row_->episodes(time_s_);
     // the numerical part's episodes; before the handover only the first
     // contact's onset is known, from the closed form
     if (numeric_now()) return numeric_->episodes();
@@ -208,6 +224,8 @@ class AnalyticEngine final : public Engine {
   [[nodiscard]] long steps() const override {
     if (body_) return body_->phases_begun(time_s_);
     if (disks_) return disks_->phases_begun(time_s_);
+    if (stack_) return 1;  // one phase: at rest
+    if (row_) return row_->impacts_begun(time_s_);
     long n = 0;
     if (pendulums_) {
       const auto& fc = pendulums_->first_contact();
@@ -221,6 +239,8 @@ class AnalyticEngine final : public Engine {
     nlohmann::json j = nlohmann::json{{"closed_form", "none"}};
     if (body_) j = body_->mapping();
     if (disks_) j = disks_->mapping();
+    if (stack_) j = stack_->mapping();
+    if (row_) j = row_->mapping();
     if (pendulums_) j = pendulums_->mapping();
     if (numeric_) {
       j["numerical_truth"] = numeric_->description();
@@ -292,6 +312,8 @@ class AnalyticEngine final : public Engine {
   double handover_s_ = 0.0;  // s, from here on the numerical truth (inf: none)
   std::unique_ptr<internal::BodyOnLine> body_;
   std::unique_ptr<internal::TwoDisksHeadOn> disks_;
+  std::unique_ptr<internal::RestingStack> stack_;
+  std::unique_ptr<internal::DiskRow> row_;
   std::unique_ptr<internal::PendulumsUntilContact> pendulums_;
   std::unique_ptr<internal::NumericalTruth> numeric_;
 };

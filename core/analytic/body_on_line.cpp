@@ -96,7 +96,35 @@ std::optional<TranslatingSupport> translating_support(const Body& body, const Ve
     return refuse(fmt::format("the polygon '{}' spins ({} rad/s): its lowest point would move",
                               body.name, body.angular_velocity_radps));
   }
-  return TranslatingSupport{-lowest, next - lowest, face};
+  return TranslatingSupport{-lowest, next - lowest, face, face_min, face_max};
+}
+
+std::string tipping_reason(const Case& c, const Body& body, const ContactPair& pair,
+                           const Vec2& normal, const TranslatingSupport& s) {
+  if (s.face_vertices < 2 || !pair.has_friction()) return "";
+  // The closed form holds the block not to turn. A rigid block does not turn
+  // while the contact's resultant acts inside its face: by the moments about
+  // the centre of mass, the friction f a support_m below it moves the normal
+  // force N to x = support_m f / N from the centre's foot, so the block holds
+  // its face while x stays within the nearer end of the face. f / N is at
+  // most tan(incline) = |g.t| / |g.n| for a block that starts at rest and
+  // holds (mu >= tan), else mu (sliding; after it stops f <= mu N still).
+  const Vec2 tangent(normal.y(), -normal.x());
+  const double g_n = std::abs(c.gravity_mps2.dot(normal));
+  const double g_t = std::abs(c.gravity_mps2.dot(tangent));
+  const bool holds = body.velocity_mps.dot(tangent) == 0.0 && g_t <= pair.friction * g_n;
+  const double ratio = holds && g_n > 0.0 ? g_t / g_n : pair.friction;
+  const double arm = s.support_m * ratio;
+  const double edge = std::min(s.face_max_m, -s.face_min_m);
+  // the face's ends to the rounding of rotated coordinates (as its level)
+  const double tol = 1e-12 * std::max(s.support_m, s.face_max_m - s.face_min_m);
+  if (arm <= edge + tol) return "";
+  return fmt::format(
+      "the polygon '{}' would tip: with f/N up to {:.4g} ({}) at {:.4g} m below its centre of "
+      "mass, the contact force acts {:.4g} m from the centre's foot, beyond its face's nearer end "
+      "at {:.4g} m (the closed form holds a block that does not turn)",
+      body.name, ratio, holds ? "tan of the incline: it holds" : "mu: it slides", s.support_m, arm,
+      edge);
 }
 
 NormalContactParams BodyOnLine::normal_params(const Case& c, int body, int line, int pair,

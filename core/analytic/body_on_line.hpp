@@ -35,6 +35,10 @@ struct TranslatingSupport {
   double support_m = 0.0;     // m
   double clearance_m = 0.0;   // m
   int face_vertices = 0;      // polygon vertices at the lowest level (0 for a disk)
+  // m, the face's ends along the line's tangent (n rotated by -90 deg) from
+  // the foot of the centre of mass: face_min <= 0 <= face_max (0, 0: a disk)
+  double face_min_m = 0.0;
+  double face_max_m = 0.0;
 };
 // level_m: vertices within level_m of the lowest count as its face (0: to
 // the rounding of the rotated coordinates); see static_level_m
@@ -42,6 +46,13 @@ struct TranslatingSupport {
                                                                     const Vec2& normal,
                                                                     std::string* why,
                                                                     double level_m = 0.0);
+
+// Why the closed form's premise that a polygon does not turn fails for `body`
+// on a line of unit normal `normal` through `pair`: the friction the motion
+// needs puts the contact's resultant beyond the face's nearer end (the block
+// tips); "" when it holds (a disk, a frictionless pair, a wide enough face).
+[[nodiscard]] std::string tipping_reason(const Case& c, const Body& body, const ContactPair& pair,
+                                         const Vec2& normal, const TranslatingSupport& s);
 
 // m: how far a block's face may stand from level and still be the rigid
 // closed form's face. A compliant face held by friction on an incline rests

@@ -32,6 +32,16 @@ double hertz_stiffness(const HertzMaterial& m) {
          std::sqrt(m.radius_i_m * m.radius_j_m / (m.radius_i_m + m.radius_j_m));
 }
 
+const char* scene_kind_name(SceneKind kind) {
+  switch (kind) {
+    case SceneKind::stack: return "stack";
+    case SceneKind::pyramid: return "pyramid";
+    case SceneKind::row: return "row";
+    case SceneKind::grid: return "grid";
+  }
+  return "grid";
+}
+
 const char* truth_kind_name(TruthKind kind) {
   switch (kind) {
     case TruthKind::none: return "none";
@@ -66,6 +76,12 @@ const ContactPair* Case::first_pair_with_friction() const {
 }
 
 std::string inject_friction_reason(const Case& c) {
+  for (const ContactGroup& g : c.contact_groups) {
+    if (!g.has_friction()) continue;
+    return "contact group '" + g.name +
+           "' has friction: mode inject applies the case's normal law as a force and has no "
+           "Coulomb friction (use the engine's native mode)";
+  }
   const ContactPair* p = c.first_pair_with_friction();
   if (p == nullptr) return {};
   return "pair '" + p->name +

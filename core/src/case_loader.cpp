@@ -13,7 +13,9 @@
 #include <sstream>
 #include <toml++/toml.h>
 
+#include "internal/case_fields.hpp"
 #include "internal/case_overrides.hpp"
+#include "internal/scene_loader.hpp"
 #include "planarbench/did_you_mean.hpp"
 #include "internal/polygon_checks.hpp"
 #include "internal/start_overlap.hpp"
@@ -28,34 +30,27 @@ namespace {
 using internal::Origins;
 using internal::Range;
 using internal::TableReader;
+using internal::kMaxCaseFileBytes;
+using internal::kMaxCoordinate_m;
+using internal::kMaxDuration_s;
+using internal::kMaxFriction;
+using internal::kMaxOutlinePoints;
+using internal::kMaxOutputSamples;
+using internal::kMaxPolygonPoints;
+using internal::kMaxSize_m;
+using internal::kMaxThreshold_m;
+using internal::kMinSize_m;
+using internal::read_contact_law;
+using internal::read_mass_properties;
+using internal::read_shape;
 
-// limits that catch absurd input, not physics: sizes and coordinates a
-// planar benchmark never needs, and output grids that would not fit in memory
-constexpr double kMaxDuration_s = 1e4;          // s
-constexpr double kMaxOutputSamples = 1e7;       // duration / output_interval
-constexpr int kMaxOutlinePoints = 100000;
-constexpr int kMaxPolygonPoints = 10000;        // the self-intersection check is O(n^2)
-constexpr double kMaxSize_m = 1e4;              // m, radius, semi-axis, extent
-// m, the smallest radius or semi-axis: a positive size far smaller (a
-// denormal 1e-310 m) gives the body an area and an inertia that underflow to
-// 0, which would be blamed on the inertia; 1 nm is 10 times the default
-// contact threshold of 1e-10 m and leaves every area property a normal double
-constexpr double kMinSize_m = 1e-9;
-constexpr double kMaxCoordinate_m = 1e6;        // m, positions, anchors, polygon points
-constexpr double kMaxThreshold_m = 1e-3;        // m, contact distance threshold
-// Coulomb coefficient: measured pairs lie in [0, ~1.5] (rubber on concrete
-// ~1, clean metals up to ~1.5); 10 keeps room for tests and rejects a slipped
-// digit (friction = 50 meant 0.5)
-constexpr double kMaxFriction = 10.0;
-// bytes of a case file: ten 10000-point polygons at ~45 bytes a point are 4.5 MB
-constexpr std::uintmax_t kMaxCaseFileBytes = 8u << 20;  // 8 MiB
-
-const std::vector<std::string> kCaseKeys = {"duration", "output_interval", "gravity",
-                                            "outline_points", "truth"};
-const std::vector<std::string> kTopKeys = {"case", "bodies", "joints", "contacts", "settings"};
-const std::vector<std::string> kCaseTableKeys = {"description", "paper", "duration",
-                                                 "output_interval", "gravity", "outline_points",
-                                                 "truth", "assumptions"};
+const std::vector<std::string> kCaseKeys = {"duration", "output_interval", "contact_output_interval",
+                                            "gravity", "outline_points", "truth"};
+const std::vector<std::string> kTopKeys = {"case",     "bodies",         "generate", "joints",
+                                           "contacts", "contact_groups", "settings"};
+const std::vector<std::string> kCaseTableKeys = {
+    "description",  "paper",          "duration", "output_interval", "contact_output_interval",
+    "gravity",      "outline_points", "truth",    "assumptions"};
 const std::vector<std::string> kBodyKeys = {"name", "fixed", "shape", "outline_points",
                                             "position", "angle", "angle_deg", "mass", "density",
                                             "inertia", "velocity", "angular_velocity"};
@@ -69,13 +64,11 @@ const std::vector<std::string> kContactKeys = {
     "name",          "bodies",    "law",      "stiffness",   "damping",
     "damping_depth", "threshold", "exponent", "restitution", "young_modulus",
     "poisson_ratio", "radius",    "friction"};
-const std::vector<std::string> kKelvinVoigtKeys = {"name",      "bodies",  "law",
-                                                   "stiffness", "damping", "damping_depth",
-                                                   "threshold", "friction"};
-const std::vector<std::string> kHertzKeys = {"name",      "bodies",   "law",
-                                             "stiffness", "exponent", "threshold",
-                                             "young_modulus", "poisson_ratio", "radius",
-                                             "friction"};
+const std::vector<std::string> kKelvinVoigtKeys = {"law",           "stiffness", "damping",
+                                                   "damping_depth", "threshold", "friction"};
+const std::vector<std::string> kHertzKeys = {"law",           "stiffness",     "exponent",
+                                             "threshold",     "young_modulus", "poisson_ratio",
+                                             "radius",        "friction"};
 const std::vector<std::string> kMaterialKeys = {"young_modulus", "poisson_ratio", "radius"};
 
 std::vector<std::string> with(std::vector<std::string> keys, const std::string& extra) {
@@ -103,6 +96,18 @@ int read_case_table(const TableReader& t, Case& c) {
                        ">= {:g} s",
                        c.duration_s / c.output_interval_s, c.duration_s, kMaxOutputSamples,
                        c.duration_s / kMaxOutputSamples));
+  }
+  if (t.has("contact_output_interval")) {
+    const double every_s = t.real("contact_output_interval", Range::positive(c.duration_s), "s");
+    const double ratio = every_s / c.output_interval_s;
+    const double whole = std::round(ratio);
+    if (whole < 1.0 || std::abs(ratio - whole) > 1e-9 * ratio) {
+      t.fail("contact_output_interval",
+             fmt::format("must be a whole multiple of output_interval = {} s (got {} s, {:.6g} "
+                         "intervals)",
+                         c.output_interval_s, every_s, ratio));
+    }
+    c.contact_output_every = static_cast<int>(whole);
   }
   c.gravity_mps2 = t.vec2_or("gravity", Vec2(0.0, -9.8066), Range::any(), "m/s^2");
   const int outline_points = t.integer_or("outline_points", 180, 3, kMaxOutlinePoints);
@@ -138,80 +143,12 @@ Polygon read_polygon(const TableReader& s) {
   return p;
 }
 
-Shape read_shape(const TableReader& s) {
-  s.only_keys(kShapeKeys);
-  const std::string type = s.word("type", kShapeTypes);
-  if (type == "circle") {
-    s.only_keys({"type", "radius"}, "of a circle");
-    return Circle{s.real("radius", Range{kMinSize_m, kMaxSize_m}, "m")};
-  }
-  if (type == "ellipse") {
-    s.only_keys({"type", "semi_axes"}, "of an ellipse");
-    const auto ab = s.pair("semi_axes", Range{kMinSize_m, kMaxSize_m}, "m");
-    return Ellipse{ab[0], ab[1]};
-  }
-  if (type == "polygon") {
-    s.only_keys({"type", "points"}, "of a polygon");
-    return read_polygon(s);
-  }
-  s.only_keys({"type", "extent"}, "of a halfplane");
-  return HalfPlane{s.real_or("extent", 20.0, Range::positive(kMaxSize_m), "m")};
-}
-
-// mass and inertia of a moving body from mass | density and inertia
-void read_mass_properties(const TableReader& t, Body& b) {
-  const bool has_mass = t.has("mass");
-  const bool has_density = t.has("density");
-  if (has_mass && has_density) t.fail("density", "give mass (kg) or density (kg/m^2), not both");
-  if (!has_mass && !has_density) {
-    t.fail_missing("mass", "mass (kg, > 0) or density (kg/m^2, > 0): the body is not fixed");
-  }
-
-  // inertia: a number, or computed from the exact shape or from its outline
-  std::string inertia_from = "shape";
-  double inertia_kgm2 = 0.0;
-  if (const toml::node* n = t.find("inertia")) {
-    if (n->is_string()) {
-      inertia_from = t.word_at(*n, t.field("inertia"), {"shape", "outline"});
-    } else if (n->is_number()) {
-      inertia_from = "number";
-      inertia_kgm2 = t.real_at(*n, t.field("inertia"), Range::positive(), "kg m^2");
-    } else {
-      t.origins().fail(n, t.field("inertia"),
-                       TableReader::must_be("a finite number > 0 (kg m^2), \"shape\" or \"outline\"",
-                                            *n));
-    }
-  }
-  const AreaProperties props = inertia_from == "outline"
-                                   ? polygon_area_properties(make_outline(b.shape, b.outline_points))
-                                   : shape_area_properties(b.shape);
-  // J / A: the polar moment per unit mass of a uniform lamina, m^2
-  const double gyration_m2 = props.polar_moment_centroid_m4 / props.area_m2;
-
-  if (has_mass) {
-    b.mass_kg = t.real("mass", Range::positive(), "kg");
-  } else {
-    const double density = t.real("density", Range::positive(), "kg/m^2");
-    b.mass_kg = density * props.area_m2;
-    if (!Range::positive().contains(b.mass_kg)) {
-      t.fail("density", fmt::format("gives mass {} kg for area {} m^2: not a finite number > 0",
-                                    b.mass_kg, props.area_m2));
-    }
-  }
-  b.inertia_kgm2 = inertia_from == "number" ? inertia_kgm2 : b.mass_kg * gyration_m2;
-  if (!Range::positive().contains(b.inertia_kgm2)) {
-    t.fail("inertia", fmt::format("computes to {} kg m^2: not a finite number > 0", b.inertia_kgm2));
-  }
-}
-
-Body read_body(const TableReader& t, int default_outline_points, const std::vector<Body>& earlier) {
+Body read_body(const TableReader& t, int default_outline_points, internal::BodyNames& names) {
   t.only_keys(kBodyKeys);
   Body b;
-  b.name = t.identifier("name");
-  for (std::size_t j = 0; j < earlier.size(); ++j) {
-    if (earlier[j].name == b.name) {
-      t.fail("name", fmt::format("duplicate body name '{}' (also bodies[{}])", b.name, j));
-    }
+  b.name = internal::body_name(t, "name");
+  if (const auto it = names.find(b.name); it != names.end()) {
+    t.fail("name", fmt::format("duplicate body name '{}' (also bodies[{}])", b.name, it->second));
   }
   b.fixed = t.boolean_or("fixed", false);
   if (b.fixed) {
@@ -376,34 +313,7 @@ ContactPair read_contact(const TableReader& t, const Case& c) {
     }
   }
 
-  // the force law
-  const std::string law = t.word("law", kLaws);
-  p.threshold_m = t.real_or("threshold", 1e-10, Range::non_negative(kMaxThreshold_m), "m");
-  p.friction = t.real_or("friction", 0.0, Range::non_negative(kMaxFriction));
-  if (law == "kelvin_voigt") {
-    t.only_keys(kKelvinVoigtKeys, "of a kelvin_voigt contact");
-    KelvinVoigt kv;
-    kv.stiffness_n_per_m = t.real("stiffness", Range::positive(), "N/m");
-    kv.damping_ns_per_m = t.real("damping", Range::non_negative(), "N s/m");
-    kv.damping_depth_m = t.real_or("damping_depth", 0.0, Range::non_negative(kMaxSize_m), "m");
-    p.law = kv;
-    return p;
-  }
-  const Range exponent_range{1.0, 3.0, true, false};
-  if (law == "hertz") {
-    t.only_keys(kHertzKeys, "of a hertz contact");
-    Hertz h;
-    h.stiffness = read_hertz_stiffness(t, h.material);
-    h.exponent = t.real_or("exponent", 1.5, exponent_range);
-    p.law = h;
-    return p;
-  }
-  t.only_keys(with(kHertzKeys, "restitution"), "of a lankarani_nikravesh contact");
-  LankaraniNikravesh ln;
-  ln.stiffness = read_hertz_stiffness(t, ln.material);
-  ln.exponent = t.real_or("exponent", 1.5, exponent_range);
-  ln.restitution = t.real("restitution", Range{0.0, 1.0, true, false});
-  p.law = ln;
+  read_contact_law(t, {"name", "bodies"}, "contact", p.law, p.threshold_m, p.friction);
   return p;
 }
 
@@ -452,7 +362,8 @@ void read_settings(const TableReader& t, const std::string& prefix,
 
 // no body of a contact pair starts with its centre inside the other
 // (internal/start_overlap.hpp says why); the error points at its position
-void check_start_overlaps(const Case& c, const std::vector<TableReader>& bodies) {
+void check_start_overlaps(const Case& c, const std::vector<TableReader>& bodies,
+                          const internal::SceneTables& scene) {
   for (const ContactPair& cp : c.contacts) {
     for (const auto& [inner, outer] : {std::pair{cp.body_b, cp.body_a}, std::pair{cp.body_a, cp.body_b}}) {
       const Body& in = c.bodies[static_cast<std::size_t>(inner)];
@@ -461,8 +372,8 @@ void check_start_overlaps(const Case& c, const std::vector<TableReader>& bodies)
       if (std::holds_alternative<HalfPlane>(in.shape)) continue;  // no centre of mass
       const auto how = internal::point_inside_body(out, in.position_m);
       if (!how) continue;
-      bodies[static_cast<std::size_t>(inner)].fail(
-          "position",
+      internal::fail_on_body(
+          scene, c, bodies, inner, "position",
           fmt::format("the centre of '{}' ({:.6g}, {:.6g}) m starts inside '{}' ({}), its partner "
                       "in contact '{}': no engine can tell which way out (coincident or nested "
                       "bodies are pushed along an arbitrary axis, a centre below the ground falls "
@@ -480,11 +391,26 @@ Case build_case(const toml::table& root, const Origins& origins) {
   const int default_outline_points = read_case_table(top.subtable("case"), c);
 
   const auto bodies = top.table_array("bodies");
-  if (bodies.empty()) top.fail_missing("bodies", "at least one [[bodies]] table");
-  for (const auto& b : bodies) c.bodies.push_back(read_body(b, default_outline_points, c.bodies));
+  const auto generators = top.table_array("generate");
+  if (bodies.empty() && generators.empty()) {
+    top.fail_missing("bodies", "at least one [[bodies]] or [[generate]] table");
+  }
+  internal::BodyNames names;
+  for (const auto& b : bodies) {
+    if (c.bodies.size() >= static_cast<std::size_t>(internal::kMaxBodies)) {
+      b.fail("name", fmt::format("more than {} bodies", internal::kMaxBodies));
+    }
+    c.bodies.push_back(read_body(b, default_outline_points, names));
+    names.emplace(c.bodies.back().name, static_cast<int>(c.bodies.size()) - 1);
+  }
+  const internal::SceneTables scene{generators, top.table_array("contact_groups")};
+  internal::read_generated_bodies(scene, default_outline_points, c, names);
   for (const auto& j : top.table_array("joints")) c.joints.push_back(read_joint(j, c));
   for (const auto& p : top.table_array("contacts")) c.contacts.push_back(read_contact(p, c));
-  check_start_overlaps(c, bodies);
+  internal::read_contact_groups(scene, c, names);
+  internal::place_resting_scenes(scene, c);
+  check_start_overlaps(c, bodies, scene);
+  internal::check_group_start_overlaps(scene, c, bodies);
   if (top.has("settings")) read_settings(top.subtable("settings"), "", c.settings);
   return c;
 }
@@ -511,6 +437,122 @@ bool has_case_table(const std::filesystem::path& path) {
 
 }  // namespace
 
+namespace internal {
+
+Shape read_shape(const TableReader& s) {
+  s.only_keys(kShapeKeys);
+  const std::string type = s.word("type", kShapeTypes);
+  if (type == "circle") {
+    s.only_keys({"type", "radius"}, "of a circle");
+    return Circle{s.real("radius", Range{kMinSize_m, kMaxSize_m}, "m")};
+  }
+  if (type == "ellipse") {
+    s.only_keys({"type", "semi_axes"}, "of an ellipse");
+    const auto ab = s.pair("semi_axes", Range{kMinSize_m, kMaxSize_m}, "m");
+    return Ellipse{ab[0], ab[1]};
+  }
+  if (type == "polygon") {
+    s.only_keys({"type", "points"}, "of a polygon");
+    return read_polygon(s);
+  }
+  s.only_keys({"type", "extent"}, "of a halfplane");
+  return HalfPlane{s.real_or("extent", 20.0, Range::positive(kMaxSize_m), "m")};
+}
+
+// mass and inertia of a moving body from mass | density and inertia
+void read_mass_properties(const TableReader& t, Body& b) {
+  const bool has_mass = t.has("mass");
+  const bool has_density = t.has("density");
+  if (has_mass && has_density) t.fail("density", "give mass (kg) or density (kg/m^2), not both");
+  if (!has_mass && !has_density) {
+    t.fail_missing("mass", "mass (kg, > 0) or density (kg/m^2, > 0): the body is not fixed");
+  }
+
+  // inertia: a number, or computed from the exact shape or from its outline
+  std::string inertia_from = "shape";
+  double inertia_kgm2 = 0.0;
+  if (const toml::node* n = t.find("inertia")) {
+    if (n->is_string()) {
+      inertia_from = t.word_at(*n, t.field("inertia"), {"shape", "outline"});
+    } else if (n->is_number()) {
+      inertia_from = "number";
+      inertia_kgm2 = t.real_at(*n, t.field("inertia"), Range::positive(), "kg m^2");
+    } else {
+      t.origins().fail(n, t.field("inertia"),
+                       TableReader::must_be("a finite number > 0 (kg m^2), \"shape\" or \"outline\"",
+                                            *n));
+    }
+  }
+  const AreaProperties props = inertia_from == "outline"
+                                   ? polygon_area_properties(make_outline(b.shape, b.outline_points))
+                                   : shape_area_properties(b.shape);
+  // J / A: the polar moment per unit mass of a uniform lamina, m^2
+  const double gyration_m2 = props.polar_moment_centroid_m4 / props.area_m2;
+
+  if (has_mass) {
+    b.mass_kg = t.real("mass", Range::positive(), "kg");
+  } else {
+    const double density = t.real("density", Range::positive(), "kg/m^2");
+    b.mass_kg = density * props.area_m2;
+    if (!Range::positive().contains(b.mass_kg)) {
+      t.fail("density", fmt::format("gives mass {} kg for area {} m^2: not a finite number > 0",
+                                    b.mass_kg, props.area_m2));
+    }
+  }
+  b.inertia_kgm2 = inertia_from == "number" ? inertia_kgm2 : b.mass_kg * gyration_m2;
+  if (!Range::positive().contains(b.inertia_kgm2)) {
+    t.fail("inertia", fmt::format("computes to {} kg m^2: not a finite number > 0", b.inertia_kgm2));
+  }
+}
+
+void read_contact_law(const TableReader& t, const std::vector<std::string>& keys,
+                      const std::string& what, ContactLaw& law_out, double& threshold_m,
+                      double& friction) {
+  auto own = [&](std::vector<std::string> law_keys) {
+    law_keys.insert(law_keys.end(), keys.begin(), keys.end());
+    return law_keys;
+  };
+  const std::string law = t.word("law", kLaws);
+  threshold_m = t.real_or("threshold", 1e-10, Range::non_negative(kMaxThreshold_m), "m");
+  friction = t.real_or("friction", 0.0, Range::non_negative(kMaxFriction));
+  if (law == "kelvin_voigt") {
+    t.only_keys(own(kKelvinVoigtKeys), "of a kelvin_voigt " + what);
+    KelvinVoigt kv;
+    kv.stiffness_n_per_m = t.real("stiffness", Range::positive(), "N/m");
+    kv.damping_ns_per_m = t.real("damping", Range::non_negative(), "N s/m");
+    kv.damping_depth_m = t.real_or("damping_depth", 0.0, Range::non_negative(kMaxSize_m), "m");
+    law_out = kv;
+    return;
+  }
+  const Range exponent_range{1.0, 3.0, true, false};
+  if (law == "hertz") {
+    t.only_keys(own(kHertzKeys), "of a hertz " + what);
+    Hertz h;
+    h.stiffness = read_hertz_stiffness(t, h.material);
+    h.exponent = t.real_or("exponent", 1.5, exponent_range);
+    law_out = h;
+    return;
+  }
+  t.only_keys(own(with(kHertzKeys, "restitution")), "of a lankarani_nikravesh " + what);
+  LankaraniNikravesh ln;
+  ln.stiffness = read_hertz_stiffness(t, ln.material);
+  ln.exponent = t.real_or("exponent", 1.5, exponent_range);
+  ln.restitution = t.real("restitution", Range{0.0, 1.0, true, false});
+  law_out = ln;
+}
+
+std::string body_name(const TableReader& t, std::string_view key) {
+  std::string name = t.identifier(key);
+  if (name.size() > kMaxBodyNameChars) {
+    t.fail(key, fmt::format("'{}' has {} characters; a body name has at most {} (the results "
+                            "file's name cells)",
+                            name, name.size(), kMaxBodyNameChars));
+  }
+  return name;
+}
+
+}  // namespace internal
+
 bool is_case_key(const std::string& key) {
   for (const auto& k : kCaseKeys) {
     if (key == k) return true;
@@ -520,7 +562,10 @@ bool is_case_key(const std::string& key) {
     if (s.empty()) return false;
   }
   if (segs[0] == "contact") return segs.size() >= 2;
-  if (segs[0] == "contacts" || segs[0] == "bodies") return segs.size() >= 3;
+  if (segs[0] == "contacts" || segs[0] == "bodies" || segs[0] == "groups" ||
+      segs[0] == "generate") {
+    return segs.size() >= 3;
+  }
   return false;
 }
 
@@ -609,9 +654,32 @@ std::vector<std::filesystem::path> resolve_cases(const std::string& spec,
     }
     return all;
   }
+  // the scenes (SPEC §11): their own folder, not in "all" (a pile of 1,000
+  // bodies is minutes where a case is a second)
+  const fs::path scenes_dir = cases_dir / "scenes";
+  if (spec == "scenes") {
+    std::vector<fs::path> scenes;
+    for (const auto& entry : fs::directory_iterator(scenes_dir, ec)) {
+      if (entry.is_regular_file(ec) && entry.path().extension() == ".toml" &&
+          has_case_table(entry.path())) {
+        scenes.push_back(entry.path());
+      }
+    }
+    if (scenes.empty()) {
+      throw InputError(scenes_dir.string(), 0, "", "holds no scene files (*.toml with a [case] table)");
+    }
+    std::sort(scenes.begin(), scenes.end(), [](const fs::path& a, const fs::path& b) {
+      return a.stem().string() < b.stem().string();
+    });
+    return scenes;
+  }
   const fs::path by_name = cases_dir / (spec + ".toml");
   if (!spec.empty() && spec.find('/') == std::string::npos && fs::is_regular_file(by_name, ec)) {
     return {by_name};
+  }
+  const fs::path scene_by_name = scenes_dir / (spec + ".toml");
+  if (!spec.empty() && spec.find('/') == std::string::npos && fs::is_regular_file(scene_by_name, ec)) {
+    return {scene_by_name};
   }
   if (fs::is_regular_file(fs::path(spec), ec)) return {fs::path(spec)};
 
@@ -624,7 +692,8 @@ std::vector<std::filesystem::path> resolve_cases(const std::string& spec,
   std::vector<std::string> names;
   for (const auto& p : all) names.push_back(p.stem().string());
   throw InputError("--case", 0, spec,
-                   fmt::format("no such case or case file{}; cases in {}: {}, or all",
+                   fmt::format("no such case or case file{}; cases in {}: {}, or all, or scenes "
+                               "(the scenes of its scenes/ folder, each also by name)",
                                did_you_mean(spec, names), cases_dir.string(),
                                names.empty() ? "none" : join_words(names)));
 }

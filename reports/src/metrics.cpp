@@ -2,6 +2,7 @@
 
 #include "planarbench/reports/contact_validity.hpp"
 #include "planarbench/reports/friction_metrics.hpp"
+#include "planarbench/reports/scene_metrics.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -317,15 +318,22 @@ std::vector<MetricValue> self_metrics(const Case& c, const RunResult& run) {
     closed = closed && !c.bodies[static_cast<std::size_t>(p.body_a)].fixed &&
              !c.bodies[static_cast<std::size_t>(p.body_b)].fixed;
   }
+  for (const auto& group : c.contact_groups) {
+    for (const int i : group.bodies) closed = closed && !c.bodies[static_cast<std::size_t>(i)].fixed;
+  }
   if (closed && n > 1) {
     double total_mass = 0.0;
     Vec2 p0 = Vec2::Zero();
     double speed_scale = 0.0;
+    // each trajectory's mass, looked up once (a scene has thousands of bodies)
+    std::map<std::string, double> mass_of;
+    for (const Body& body : c.bodies) mass_of.emplace(body.name, body.mass_kg);
+    std::vector<double> masses;
     for (const auto& b : run.bodies) {
-      const Body& body = c.bodies[static_cast<std::size_t>(c.body_index(b.name))];
-      total_mass += body.mass_kg;
-      p0 += body.mass_kg * b.velocity_mps.front();
-      speed_scale += body.mass_kg * b.velocity_mps.front().norm();
+      masses.push_back(mass_of.at(b.name));
+      total_mass += masses.back();
+      p0 += masses.back() * b.velocity_mps.front();
+      speed_scale += masses.back() * b.velocity_mps.front().norm();
     }
     const double p_scale = p0.norm() > 0.0 ? p0.norm() : speed_scale;  // kg m/s
     if (p_scale > 0.0 || std::isnan(p_scale)) {
@@ -333,9 +341,8 @@ std::vector<MetricValue> self_metrics(const Case& c, const RunResult& run) {
       const double t0 = run.bodies.front().time_s.front();
       for (std::size_t i = 0; i < n; ++i) {
         Vec2 p = Vec2::Zero();
-        for (const auto& b : run.bodies) {
-          p += c.bodies[static_cast<std::size_t>(c.body_index(b.name))].mass_kg *
-               b.velocity_mps[i];
+        for (std::size_t j = 0; j < run.bodies.size(); ++j) {
+          p += masses[j] * run.bodies[j].velocity_mps[i];
         }
         const double t = run.bodies.front().time_s[i] - t0;
         worst = nan_max(worst, (p - p0 - total_mass * t * c.gravity_mps2).norm() / p_scale);
@@ -396,6 +403,7 @@ std::vector<MetricValue> case_metrics(const Case& c, const CaseRuns& runs) {
     }
     append(self_metrics(c, r));
     append(validity_metrics(c, r));  // SPEC §9, against "self"
+    append(scene_metrics(c, r, truth));  // SPEC §11
   }
   // engine against engine: the discrepancy matrix (upper triangle)
   for (std::size_t i = 0; i < runs.runs.size(); ++i) {

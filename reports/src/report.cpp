@@ -15,6 +15,7 @@
 #include "report_files.hpp"
 #include "report_friction.hpp"
 #include "report_validity.hpp"
+#include "report_scenes.hpp"
 #include "report_html.hpp"
 #include "planarbench/output_file.hpp"
 #include "report_mapping.hpp"
@@ -77,6 +78,11 @@ void check_report_folder(const fs::path& dir) {
   }
   for (const char* page : {"report.html", "report.md"}) (void)output_target("--out", dir / page);
 }
+
+// the report's files into options.out_dir (write_report below)
+ReportSummary write_report_files(const internal::Report& report, const internal::WebAssets& assets,
+                                 const ReportOptions& options, std::size_t n_metrics,
+                                 std::size_t n_checks, std::size_t failed, std::size_t known);
 
 }  // namespace
 
@@ -174,6 +180,19 @@ ReportSummary write_report(const ReportOptions& options) {
   }
   report.friction = internal::friction_section(cases, results, campaigns);
   report.validity = internal::validity_section(cases, results);
+  if (options.scenes.empty()) {
+    report.scenes = internal::scenes_section(cases, results);
+  } else {
+    const ResultsFile scene_results = read_results_file(options.scenes);
+    std::vector<Case> scene_cases;
+    for (const CaseRuns& cr : scene_results.cases) scene_cases.push_back(case_as_run(cr));
+    report.scenes = internal::scenes_section(scene_cases, scene_results);
+    if (report.scenes.tables.empty()) {
+      throw InputError("--scenes", 0, options.scenes.string(),
+                       "holds no scene runs (cases with [[generate]] bodies); give a file of "
+                       "`planarbench run --case scenes`");
+    }
+  }
   const auto outcomes = check_thresholds(thresholds, metrics, invalid);
   std::size_t failed = 0;
   std::size_t known = 0;
@@ -211,7 +230,27 @@ ReportSummary write_report(const ReportOptions& options) {
   if (with_results) report.tables.push_back(internal::provenance_table(provenance, results));
   if (with_results && !has_runs) report.results_file.clear();
 
-  // the files: figures first, the pages that reference them last
+  // the files: figures first, the pages that reference them last; a write
+  // that fails leaves no folder this call created behind (issue 49: an
+  // empty figures/ stayed after a failed report)
+  std::error_code ec;
+  const bool had_out = fs::exists(options.out_dir, ec);
+  const bool had_figures = fs::exists(options.out_dir / "figures", ec);
+  try {
+    return write_report_files(report, assets, options, metrics.size(), outcomes.size(), failed,
+                              known);
+  } catch (...) {
+    if (!had_figures) fs::remove_all(options.out_dir / "figures", ec);
+    if (!had_out && fs::is_empty(options.out_dir, ec)) fs::remove(options.out_dir, ec);
+    throw;
+  }
+}
+
+namespace {
+
+ReportSummary write_report_files(const internal::Report& report, const internal::WebAssets& assets,
+                                 const ReportOptions& options, std::size_t n_metrics,
+                                 std::size_t n_checks, std::size_t failed, std::size_t known) {
   internal::ensure_directory(options.out_dir);
   internal::ensure_directory(options.out_dir / "figures");
   ReportSummary summary;
@@ -248,6 +287,10 @@ ReportSummary write_report(const ReportOptions& options) {
     internal::write_text_atomically(options.out_dir / ("figures/" + f.id + ".svg"), f.svg);
     ++summary.svg_files;
   }
+  for (const auto& f : report.scenes.figures) {
+    internal::write_text_atomically(options.out_dir / ("figures/" + f.id + ".svg"), f.svg);
+    ++summary.svg_files;
+  }
   summary.impacts_figures = report.impacts.figures.size();
   summary.friction_figures = report.friction.figures.size();
   summary.validity_figures = report.validity.figures.size();
@@ -257,11 +300,13 @@ ReportSummary write_report(const ReportOptions& options) {
   internal::write_text_atomically(summary.markdown, internal::report_markdown(report));
   summary.html = options.out_dir / "report.html";
   internal::write_text_atomically(summary.html, internal::report_html(report, assets));
-  summary.metrics = metrics.size();
-  summary.checks = outcomes.size();
+  summary.metrics = n_metrics;
+  summary.checks = n_checks;
   summary.checks_failed = failed;
   summary.checks_known = known;
   return summary;
 }
+
+}  // namespace
 
 }  // namespace pb

@@ -11,6 +11,7 @@
 #include "planarbench/run_result.hpp"
 #include "report_svg.hpp"
 #include "report_work_precision_svg.hpp"
+#include "file_id.hpp"
 
 namespace pb::internal {
 
@@ -153,14 +154,6 @@ double rms_spread(const std::vector<double>& x, const std::vector<double>& y) {
     ss += (x[i] - mx) * (x[i] - mx) + (y[i] - my) * (y[i] - my);
   }
   return std::sqrt(ss / static_cast<double>(n));
-}
-
-std::string file_safe(const std::string& s) {
-  std::string out;
-  for (const char ch : s) {
-    out += std::isalnum(static_cast<unsigned char>(ch)) != 0 || ch == '-' || ch == '_' ? ch : '_';
-  }
-  return out;
 }
 
 std::string line_plot_svg(const LinePlot& p) {
@@ -309,7 +302,7 @@ CampaignSection campaign_section(const CampaignTable& t, const std::string& file
     }
     // runs and status per engine
     Table runs_table;
-    runs_table.id = file_safe(c.name) + "_campaign_runs";
+    runs_table.id = file_id(c.name) + "_campaign_runs";
     runs_table.title = c.name + ": runs per engine";
     runs_table.note =
         "Whose physics: the mode, whose collision detection found the contacts and whose "
@@ -367,7 +360,7 @@ CampaignSection campaign_section(const CampaignTable& t, const std::string& file
       if (points.empty()) continue;
       const bool x_log = a.kind == "log" || all_positive_spanning(points);
       Table table;
-      table.id = file_safe(c.name + "_" + a.name) + "_campaign_axis";
+      table.id = file_id(c.name + "_" + a.name) + "_campaign_axis";
       table.title = fmt::format("{}: median (min..max) against {}", c.name, a.name);
       table.columns = {"engine", a.name + (a.unit.empty() ? "" : ", " + a.unit), "runs"};
       for (const auto& m : t.metrics) table.columns.push_back(m.name + ", " + m.unit);
@@ -429,11 +422,11 @@ CampaignSection campaign_section(const CampaignTable& t, const std::string& file
       }
       metric_plot.y_log = all_positive_spanning(finite);
       if (!t.metrics.empty()) {
-        sec.figures.push_back({file_safe(c.name + "_" + a.name + "_" + metric_name), metric_plot.title,
+        sec.figures.push_back({file_id(c.name + "_" + a.name + "_" + metric_name), metric_plot.title,
                                line_plot_svg(metric_plot)});
       }
       sec.figures.push_back(
-          {file_safe(c.name + "_" + a.name + "_wall_time"), cost_plot.title, line_plot_svg(cost_plot)});
+          {file_id(c.name + "_" + a.name + "_wall_time"), cost_plot.title, line_plot_svg(cost_plot)});
       sec.tables.push_back(std::move(table));
     }
 
@@ -449,7 +442,7 @@ CampaignSection campaign_section(const CampaignTable& t, const std::string& file
         groups[key].push_back(r);
       }
       Table table;
-      table.id = file_safe(c.name + "_" + t.axes[k].name) + "_campaign_spread";
+      table.id = file_id(c.name + "_" + t.axes[k].name) + "_campaign_spread";
       table.title = fmt::format("{}: spread of the trajectories over the {} samples of {}", c.name,
                                 t.axes[k].values.size(), t.axes[k].name);
       table.columns = {"engine", "other axes", "ok samples", "spread at t = 0, m", "at the end, m",
@@ -508,7 +501,7 @@ CampaignSection campaign_section(const CampaignTable& t, const std::string& file
         }
         plot.y_log = all_positive_spanning(finite);
         if (figures < kMaxSpreadFigures) {
-          sec.figures.push_back({file_safe(fmt::format("{}_{}_spread_{}", c.name, t.axes[k].name, figures)),
+          sec.figures.push_back({file_id(fmt::format("{}_{}_spread_{}", c.name, t.axes[k].name, figures)),
                                  plot.title, line_plot_svg(plot)});
           ++figures;
         }

@@ -42,10 +42,6 @@ struct LinePlot {
 };
 [[nodiscard]] std::string line_plot_svg(const LinePlot& p);
 
-// s with every character but letters, digits, '-' and '_' replaced by '_'
-// (a figure's file name and element id)
-[[nodiscard]] std::string file_safe(const std::string& s);
-
 // root-mean-square distance of the points (x_i, y_i) from their mean; NaN
 // without a finite point
 [[nodiscard]] double rms_spread(const std::vector<double>& x, const std::vector<double>& y);

@@ -9,6 +9,8 @@
 #include <map>
 #include <optional>
 
+#include "file_id.hpp"
+
 namespace pb::internal {
 
 namespace {
@@ -350,16 +352,6 @@ void clip_off_scale(Figure& f) {
 
 }  // namespace
 
-std::string safe_name(const std::string& name) {
-  std::string out = name;
-  for (char& ch : out) {
-    const bool ok = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') ||
-                    (ch >= '0' && ch <= '9') || ch == '_' || ch == '-';
-    if (!ok) ch = '_';
-  }
-  return out.empty() ? "_" : out;
-}
-
 std::vector<const RunResult*> runs_in_report_order(const CaseRuns& runs) {
   auto rank = [](const std::string& engine) -> std::size_t {
     for (std::size_t i = 0; i < kEngineOrder.size(); ++i) {
@@ -422,7 +414,7 @@ std::vector<Figure> case_figures(const Case& c, const CaseRuns& runs, const Figu
   std::vector<Figure> figures;
   for (const auto& spec : specs) {
     Figure f;
-    f.id = safe_name(c.name + "_" + spec.id_suffix);
+    f.id = file_id(c.name + "_" + spec.id_suffix);
     f.case_name = c.name;
     f.title = spec.title;
     f.paper_figure = spec.paper_figure;

@@ -36,9 +36,6 @@ struct FigureLimits {
 [[nodiscard]] std::vector<Figure> case_figures(const Case& c, const CaseRuns& runs,
                                                const FigureLimits& limits);
 
-// a name made safe for ids and file names: [A-Za-z0-9_-], others become '_'
-[[nodiscard]] std::string safe_name(const std::string& name);
-
 // "oracle: ..." for a run calibrated with foreknowledge, "inject: ..." for one
 // whose contact force is the case's law applied by the adapter, "" otherwise
 // (SPEC §5b: marked wherever results are shown)

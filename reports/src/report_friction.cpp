@@ -11,6 +11,7 @@
 #include "planarbench/reports/friction_metrics.hpp"
 #include "report_campaign.hpp"
 #include "report_svg.hpp"
+#include "file_id.hpp"
 
 namespace pb::internal {
 
@@ -52,7 +53,7 @@ void add_hold_figure(const Case& c, const CaseRuns& cr, FrictionSection& s) {
     plot.lines.push_back(std::move(line));
   }
   if (plot.lines.empty()) return;
-  s.figures.push_back({file_safe(c.name + "_hold_drift"), plot.title, line_plot_svg(plot)});
+  s.figures.push_back({file_id(c.name + "_hold_drift"), plot.title, line_plot_svg(plot)});
 }
 
 // the curve's case: tan(theta) of its first half-plane pair's line against
@@ -137,7 +138,7 @@ void add_curve(const CampaignTable& t, const std::string& file, FrictionSection&
     if (!line.x.empty()) plot.lines.push_back(std::move(line));
   }
   s.curve_file = file;
-  s.figures.push_back({file_safe(cc.name + "_friction_curve"), plot.title, line_plot_svg(plot)});
+  s.figures.push_back({file_id(cc.name + "_friction_curve"), plot.title, line_plot_svg(plot)});
   s.curve.id = "friction-curve";
   s.curve.title = "Friction curve: steady acceleration (m/s^2) per tan(theta) / mu";
   s.curve.note = fmt::format(
@@ -256,7 +257,7 @@ bool add_family(const CampaignTable& t, const std::string& file, FrictionSection
       if (!line.x.empty()) plot.lines.push_back(std::move(line));
     }
     if (!plot.lines.empty()) {
-      s.figures.push_back({file_safe(std::string("block_family_") + fm.name), plot.title,
+      s.figures.push_back({file_id(std::string("block_family_") + fm.name), plot.title,
                            line_plot_svg(plot)});
     }
   }

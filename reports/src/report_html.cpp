@@ -209,6 +209,10 @@ nlohmann::json report_data_json(const Report& report) {
                      {"figures", figures_json(report.impacts.figures)},
                      {"tables", impact_tables}};
   // the physical-validity section: readings, table, figures (SVG text)
+  data["scenes"] = {{"note", report.scenes.note},
+                    {"tables", nlohmann::json::array()},
+                    {"figures", figures_json(report.scenes.figures)}};
+  for (const auto& t : report.scenes.tables) data["scenes"]["tables"].push_back(table_json(t));
   data["validity"] = {{"note", report.validity.note},
                       {"readings", report.validity.readings},
                       {"table", table_json(report.validity.table)},

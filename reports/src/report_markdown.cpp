@@ -5,88 +5,13 @@
 #include <algorithm>
 #include <string_view>
 
+#include "markdown_text.hpp"
 #include "report_mapping.hpp"
 #include "report_work_precision.hpp"
 
 namespace pb::internal {
 
 namespace {
-
-bool word_char(char ch) {
-  return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
-         (static_cast<unsigned char>(ch) & 0x80) != 0;
-}
-
-// Text of the user's (a case's description, assumptions, name, a table cell)
-// as Markdown that shows it and nothing else (issue 24): on one line
-// (line breaks and other control characters to spaces), '<', '>' and '&' as
-// HTML entities (no raw HTML), and with a backslash the punctuation that
-// would make Markdown of it: \ ` * [ ] | ~, and '_' where it could open or
-// close emphasis (not inside a word: falling_ball stays as it is).
-std::string md_text(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char ch = text[i];
-    if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) {
-      out += ' ';
-    } else if (ch == '&') {
-      out += "&amp;";
-    } else if (ch == '<') {
-      out += "&lt;";
-    } else if (ch == '>') {
-      out += "&gt;";
-    } else if (ch == '\\' || ch == '`' || ch == '*' || ch == '[' || ch == ']' || ch == '|' ||
-               ch == '~') {
-      out += '\\';
-      out += ch;
-    } else if (ch == '_') {
-      const bool inside_word = i > 0 && i + 1 < text.size() && word_char(text[i - 1]) &&
-                               word_char(text[i + 1]);
-      if (!inside_word) out += '\\';
-      out += ch;
-    } else {
-      out += ch;
-    }
-  }
-  return out;
-}
-
-// md_text at the start of a block (a paragraph, a list item): also no
-// heading (#), list item (- + 1. 1)) or setext underline (=) of its own
-std::string md_block(std::string_view text) {
-  while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
-  std::string out = md_text(text);
-  if (out.empty()) return out;
-  if (out.front() == '#' || out.front() == '-' || out.front() == '+' || out.front() == '=') {
-    out.insert(0, 1, '\\');
-    return out;
-  }
-  std::size_t digits = 0;
-  while (digits < out.size() && out[digits] >= '0' && out[digits] <= '9') ++digits;
-  if (digits > 0 && digits < out.size() && (out[digits] == '.' || out[digits] == ')')) {
-    out.insert(digits, 1, '\\');
-  }
-  return out;
-}
-
-// text as a code span: fenced with one more backtick than its longest run
-// of backticks (padded when it starts or ends with one), on one line
-std::string md_code(std::string_view text) {
-  std::string body;
-  std::size_t run = 0;
-  std::size_t longest = 0;
-  for (const char ch : text) {
-    body += static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f ? ' ' : ch;
-    run = ch == '`' ? run + 1 : 0;
-    longest = std::max(longest, run);
-  }
-  const std::string fence(longest + 1, '`');
-  const bool pad = !body.empty() && (body.front() == '`' || body.back() == '`');
-  std::string out = fence;
-  out.append(pad ? " " : "").append(body).append(pad ? " " : "").append(fence);
-  return out;
-}
 
 std::string cell(const std::string& text) { return md_text(text); }
 
@@ -138,15 +63,18 @@ std::string work_precision_markdown(const Report& report) {
 }
 
 std::string campaign_markdown(const Report& report) {
-  std::string md = "## Campaign\n\n" + report.campaign.note + "\n\n";
+  // the notes are plain text holding the campaign's own names (its file, its
+  // axes' names and keys: issue 49, an axis named <img src=x onerror=...>
+  // reached report.md as HTML): shown as text
+  std::string md = "## Campaign\n\n" + md_block(report.campaign.note) + "\n\n";
   for (const auto& c : report.campaign.cases) {
-    md += "### " + md_text(c.name) + "\n\nTruth of position_error_m: " + c.truth + ".\n\n";
+    md += "### " + md_text(c.name) + "\n\nTruth of position_error_m: " + md_text(c.truth) + ".\n\n";
     for (const auto& f : c.figures) {
       md += fmt::format("![{}](figures/{}.svg)\n\n", md_text(f.title), f.id);
     }
     for (const auto& t : c.tables) {
       md += "#### " + md_text(t.title) + "\n\n";
-      if (!t.note.empty()) md += t.note + "\n\n";
+      if (!t.note.empty()) md += md_block(t.note) + "\n\n";
       md += (t.rows.empty() ? std::string("(none)\n") : markdown_table(t)) + "\n";
     }
   }
@@ -182,6 +110,14 @@ std::string validity_markdown(const Report& report) {
   for (const auto& line : v.readings) md += "- " + md_text(line) + "\n";
   md += "\n### " + v.table.title + "\n\n" + v.table.note + "\n\n" + markdown_table(v.table) + "\n";
   for (const auto& fig : v.figures) md += fmt::format("![{}](figures/{}.svg)\n\n", md_text(fig.title), fig.id);
+  return md;
+}
+
+std::string scenes_markdown(const Report& report) {
+  const ScenesSection& sc = report.scenes;
+  std::string md = "## Scenes\n\n" + sc.note + "\n\n";
+  for (const auto& t : sc.tables) md += "### " + t.title + "\n\n" + markdown_table(t) + "\n";
+  for (const auto& fig : sc.figures) md += fmt::format("![{}](figures/{}.svg)\n\n", md_text(fig.title), fig.id);
   return md;
 }
 
@@ -251,6 +187,7 @@ std::string report_markdown(const Report& report) {
   if (!report.friction.figures.empty()) md += "- [Friction](#friction)\n";
   if (!report.impacts.file.empty()) md += "- [Measured impacts](#measured-impacts)\n";
   if (!report.validity.table.rows.empty()) md += "- [Physical validity](#physical-validity)\n";
+  if (!report.scenes.tables.empty()) md += "- [Scenes](#scenes)\n";
   for (const auto& t : report.tables) md += fmt::format("- [{}](#{})\n", md_text(t.title), anchor(t.title));
   if (!report.results_file.empty()) md += "- [Parameter mapping](#parameter-mapping)\n";
   md += "\n";
@@ -293,6 +230,7 @@ std::string report_markdown(const Report& report) {
   if (!report.friction.figures.empty()) md += friction_markdown(report);
   if (!report.impacts.file.empty()) md += impacts_markdown(report);
   if (!report.validity.table.rows.empty()) md += validity_markdown(report);
+  if (!report.scenes.tables.empty()) md += scenes_markdown(report);
   for (const auto& t : report.tables) section_table(md, t);
   // a sweep-only report has no runs to map
   if (report.results_file.empty()) return md;

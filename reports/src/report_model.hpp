@@ -161,6 +161,13 @@ struct ValiditySection {
   std::vector<CampaignFigure> figures;
 };
 
+// the scenes section (report_scenes.hpp)
+struct ScenesSection {
+  std::string note;
+  std::vector<Table> tables;  // one per family
+  std::vector<CampaignFigure> figures;
+};
+
 struct Report {
   std::string results_file;                                     // as given on the command line
   std::string thresholds_file;                                  // "" when none
@@ -179,6 +186,7 @@ struct Report {
   FrictionSection friction;  // empty without friction cases or a friction curve
   ImpactsSection impacts;    // empty without a file of `planarbench impacts`
   ValiditySection validity;  // empty without contact rows (report_validity.hpp)
+  ScenesSection scenes;      // empty without scenes (report_scenes.hpp)
 };
 
 }  // namespace pb::internal

@@ -79,30 +79,6 @@ double tick_step(double range, int target) {
   return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * p;
 }
 
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char ch : text) {
-    switch (ch) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += ch;
-    }
-  }
-  return out;
-}
-
 std::string figure_svg(const Figure& f, double t0_s, double t1_s, const std::string& title) {
   const double pw = kWidth - kLeft - kRight;   // plot width, px
   const double ph = kHeight - kTop - kBottom;  // plot height, px

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "report_model.hpp"
+#include "xml_escape.hpp"  // the figures' text
 
 namespace pb::internal {
 
@@ -21,8 +22,5 @@ namespace pb::internal {
 // is min-max decimated to the plot's pixel columns, so peaks survive.
 [[nodiscard]] std::string figure_svg(const Figure& figure, double t0_s, double t1_s,
                                      const std::string& title);
-
-// XML text escaping (&, <, >, ")
-[[nodiscard]] std::string xml_escape(const std::string& text);
 
 }  // namespace pb::internal

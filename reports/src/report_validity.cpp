@@ -9,6 +9,7 @@
 #include "planarbench/reports/contact_validity.hpp"
 #include "report_campaign.hpp"
 #include "report_svg.hpp"
+#include "file_id.hpp"
 
 namespace pb::internal {
 
@@ -136,7 +137,7 @@ bool add_figure(const Case& c, const std::vector<RunSamples>& runs, const char* 
     if (!line.x.empty()) plot.lines.push_back(std::move(line));
   }
   if (plot.lines.empty()) return false;
-  out.push_back({file_safe(c.name + suffix), plot.title, line_plot_svg(plot)});
+  out.push_back({file_id(c.name + suffix), plot.title, line_plot_svg(plot)});
   return true;
 }
 

@@ -8,6 +8,7 @@
 #include "report_figures.hpp"
 #include "report_tables.hpp"
 #include "report_work_precision_svg.hpp"
+#include "file_id.hpp"
 
 namespace pb::internal {
 
@@ -114,7 +115,7 @@ int default_rung(const SweepSeries& s) {
 WorkPrecisionCase work_precision_case(const SweepCase& c) {
   WorkPrecisionCase w;
   w.name = c.case_name;
-  w.id = safe_name(c.case_name) + "_work_precision";
+  w.id = file_id(c.case_name) + "_work_precision";
   w.truth = c.truth;
   w.truth_note = c.truth_note;
   w.targets_m = work_precision_targets();

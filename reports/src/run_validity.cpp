@@ -38,6 +38,11 @@ double first_bad(const Vec2& v) {
   return std::isfinite(v.x()) ? v.y() : v.x();
 }
 
+// a field where NaN means "not given": only an infinity is invalid
+double not_inf(double v) {
+  return std::isinf(v) ? v : 0.0;
+}
+
 }  // namespace
 
 std::string InvalidRun::run() const {
@@ -80,9 +85,54 @@ std::vector<InvalidRun> invalid_runs(const CaseRuns& cr) {
     scan(
         cr.case_name, r, run + "/contacts", "time", r.contacts.size(),
         [&](std::size_t i) { return r.contacts[i].time_s; }, out);
+    const auto& cs = r.contacts;
+    const std::string contacts = run + "/contacts";
     scan(
-        cr.case_name, r, run + "/contacts", "force_n", r.contacts.size(),
-        [&](std::size_t i) { return r.contacts[i].sample.force_n; }, out);
+        cr.case_name, r, contacts, "force_n", cs.size(),
+        [&](std::size_t i) { return cs[i].sample.force_n; }, out);
+    scan(
+        cr.case_name, r, contacts, "normal", cs.size(),
+        [&](std::size_t i) { return first_bad(cs[i].sample.normal); }, out);
+    scan(
+        cr.case_name, r, contacts, "point_m", cs.size(),
+        [&](std::size_t i) { return first_bad(cs[i].sample.point_m); }, out);
+    scan(
+        cr.case_name, r, contacts, "penetration_m", cs.size(),
+        [&](std::size_t i) { return not_inf(cs[i].sample.penetration_m); }, out);
+    scan(
+        cr.case_name, r, contacts, "tangential_force_n", cs.size(),
+        [&](std::size_t i) { return not_inf(cs[i].sample.tangential_force_n); }, out);
+    scan(
+        cr.case_name, r, contacts, "slip_mps", cs.size(),
+        [&](std::size_t i) { return not_inf(cs[i].sample.slip_mps); }, out);
+    // the episodes (issue 49: every float of a reference run's events set to
+    // NaN passed the gate): an episode has begun, so its onset, approach,
+    // peak and impulse are numbers; the rest may be NaN as the layout says
+    const auto& es = r.events;
+    const std::string events = run + "/events";
+    struct EventField {
+      const char* name;
+      double ContactEpisode::*member;
+      bool may_be_nan;
+    };
+    constexpr EventField fields[] = {
+        {"onset_time_s", &ContactEpisode::onset_time_s, false},
+        {"approach_speed_mps", &ContactEpisode::approach_speed_mps, false},
+        {"peak_force_n", &ContactEpisode::peak_force_n, false},
+        {"impulse_ns", &ContactEpisode::impulse_ns, false},
+        {"offset_time_s", &ContactEpisode::offset_time_s, true},
+        {"separation_speed_mps", &ContactEpisode::separation_speed_mps, true},
+        {"restitution", &ContactEpisode::restitution, true},
+        {"max_penetration_m", &ContactEpisode::max_penetration_m, true}};
+    for (const EventField& f : fields) {
+      scan(
+          cr.case_name, r, events, f.name, es.size(),
+          [&](std::size_t i) {
+            const double v = es[i].*f.member;
+            return f.may_be_nan ? not_inf(v) : v;
+          },
+          out);
+    }
   }
   return out;
 }

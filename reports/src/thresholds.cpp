@@ -13,6 +13,9 @@
 #include "planarbench/errors.hpp"
 #include "planarbench/reports/contact_validity.hpp"
 #include "planarbench/reports/friction_metrics.hpp"
+#include "planarbench/reports/scene_metrics.hpp"
+#include "markdown_text.hpp"
+#include "xml_escape.hpp"
 
 namespace pb {
 
@@ -27,6 +30,7 @@ const std::set<std::string>& metric_names() {
       "episode_count"};
     for (const char* f : friction_metric_names()) n.insert(f);  // SPEC §7
     for (const char* f : validity_metric_names()) n.insert(f);  // SPEC §9
+    for (const char* f : scene_metric_names()) n.insert(f);     // SPEC §11
     return n;
   }();
   return names;
@@ -43,20 +47,6 @@ std::string describe(const toml::node& n) {
   if (const auto* v = n.as_array()) return fmt::format("an array of {}", v->size());
   if (n.is_table()) return "a table";
   return "a date/time";
-}
-
-std::string xml_escaped(const std::string& s) {
-  std::string out;
-  for (char ch : s) {
-    switch (ch) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += ch;
-    }
-  }
-  return out;
 }
 
 std::string test_name(const CheckOutcome& o) {
@@ -336,6 +326,25 @@ ThresholdsFile load_thresholds_file(const std::filesystem::path& path) {
     }
     out.push_back(th);
   }
+  // a [truths] key is a case some band of this file judges (issue 49: a
+  // misspelled key, or one naming no case, passed while the case it meant
+  // went without its kind)
+  if (const toml::node* tr = doc.get("truths")) {
+    std::vector<std::string> judged;
+    for (const Threshold& th : out) {
+      if (std::find(judged.begin(), judged.end(), th.case_name) == judged.end()) {
+        judged.push_back(th.case_name);
+      }
+    }
+    for (const auto& [key, node] : *tr->as_table()) {
+      const std::string name(key.str());
+      if (std::find(judged.begin(), judged.end(), name) != judged.end()) continue;
+      throw InputError(file, line_of(node), "truths." + name,
+                       fmt::format("names no case of this file's [[threshold]] entries{}; a truth's "
+                                   "kind is stated for a case its bands judge",
+                                   did_you_mean(name, judged)));
+    }
+  }
   loaded.thresholds = std::move(out);
   return loaded;
 }
@@ -502,32 +511,32 @@ std::string junit_xml(const std::vector<CheckOutcome>& outcomes,
   x += fmt::format("  <testsuite name=\"planarbench\" tests=\"{}\" failures=\"{}\">\n", tests,
                    failures);
   for (const auto& run : diverged_runs) {
-    x += fmt::format("    <testcase classname=\"{}\" name=\"status\">\n", xml_escaped(run));
+    x += fmt::format("    <testcase classname=\"{}\" name=\"status\">\n", internal::xml_escape(run));
     x += fmt::format("      <failure message=\"run diverged\"/>\n    </testcase>\n");
   }
   for (const auto& f : invalid) {
-    x += fmt::format("    <testcase classname=\"{}\" name=\"data\">\n", xml_escaped(f.run()));
+    x += fmt::format("    <testcase classname=\"{}\" name=\"data\">\n", internal::xml_escape(f.run()));
     x += fmt::format("      <failure message=\"invalid data: {}\"/>\n    </testcase>\n",
-                     xml_escaped(f.what()));
+                     internal::xml_escape(f.what()));
   }
   for (const auto& o : outcomes) {
     x += fmt::format("    <testcase classname=\"{}.{}\" name=\"{}\">\n",
-                     xml_escaped(o.threshold.case_name), xml_escaped(o.threshold.engine),
-                     xml_escaped(test_name(o)));
+                     internal::xml_escape(o.threshold.case_name), internal::xml_escape(o.threshold.engine),
+                     internal::xml_escape(test_name(o)));
     x += "      <properties>\n";
     x += fmt::format("        <property name=\"value\" value=\"{:.9g}\"/>\n", o.value.actual);
     x += fmt::format("        <property name=\"desired\" value=\"{:.9g}\"/>\n", o.value.desired);
     x += fmt::format("        <property name=\"error\" value=\"{:.9g}\"/>\n", o.value.error);
     x += fmt::format("        <property name=\"limit\" value=\"{:.9g}\"/>\n", o.limit);
-    x += fmt::format("        <property name=\"why\" value=\"{}\"/>\n", xml_escaped(o.threshold.why));
+    x += fmt::format("        <property name=\"why\" value=\"{}\"/>\n", internal::xml_escape(o.threshold.why));
     if (!o.threshold.bound.empty()) {
       x += fmt::format("        <property name=\"bound\" value=\"{}\"/>\n",
-                       xml_escaped(o.threshold.bound));
+                       internal::xml_escape(o.threshold.bound));
     }
     x += fmt::format("        <property name=\"outcome\" value=\"{}\"/>\n", outcome_label(o));
     if (!o.threshold.known_breach.empty()) {
       x += fmt::format("        <property name=\"known_breach\" value=\"{}\"/>\n",
-                       xml_escaped(o.threshold.known_breach));
+                       internal::xml_escape(o.threshold.known_breach));
       x += fmt::format("        <property name=\"expected_min\" value=\"{:.9g}\"/>\n",
                        o.threshold.expected_min);
       x += fmt::format("        <property name=\"expected_max\" value=\"{:.9g}\"/>\n",
@@ -535,10 +544,10 @@ std::string junit_xml(const std::vector<CheckOutcome>& outcomes,
     }
     x += "      </properties>\n";
     if (fails_gate(o)) {
-      x += fmt::format("      <failure message=\"{}\"/>\n", xml_escaped(o.message));
+      x += fmt::format("      <failure message=\"{}\"/>\n", internal::xml_escape(o.message));
     } else if (!o.passed) {
       // a known breach: shown, not failing (JUnit's skipped, with the reason)
-      x += fmt::format("      <skipped message=\"{}\"/>\n", xml_escaped(o.message));
+      x += fmt::format("      <skipped message=\"{}\"/>\n", internal::xml_escape(o.message));
     }
     x += "    </testcase>\n";
   }
@@ -564,8 +573,11 @@ std::string markdown_summary(const std::vector<CheckOutcome>& outcomes,
                                              known),
                     diverged_runs.empty() ? ""
                                           : fmt::format("; {} run(s) diverged", diverged_runs.size()));
-  for (const auto& r : diverged_runs) md += fmt::format("- **diverged**: {}\n", r);
-  for (const auto& f : invalid) md += fmt::format("- **invalid data**: {}\n", f.describe());
+  // every text here can hold what a user or an engine wrote (a reason, a
+  // why, a case name): shown as Markdown text, never as markup
+  using internal::md_text;
+  for (const auto& r : diverged_runs) md += fmt::format("- **diverged**: {}\n", md_text(r));
+  for (const auto& f : invalid) md += fmt::format("- **invalid data**: {}\n", md_text(f.describe()));
   if (failed + known == 0) return md;
   md += "| case | engine | metric | outcome | deviation | limit | known breach: value in its expected "
         "range | why |\n|---|---|---|---|---|---|---|---|\n";
@@ -578,10 +590,11 @@ std::string markdown_summary(const std::vector<CheckOutcome>& outcomes,
             : fmt::format("{:.4g} in [{:.4g}, {:.4g}]", o.value.actual, o.threshold.expected_min,
                           o.threshold.expected_max);
     md += fmt::format("| {} | {} | {} | {} | {:.4g} | {:.4g} | {} | {} |\n",
-                      o.threshold.case_name, o.threshold.engine, test_name(o), outcome_label(o),
+                      md_text(o.threshold.case_name), md_text(o.threshold.engine),
+                      md_text(test_name(o)), outcome_label(o),
                       std::abs(o.value.actual - o.value.desired), o.limit, range,
-                      o.threshold.known_breach.empty() ? o.threshold.why
-                                                       : o.threshold.known_breach);
+                      md_text(o.threshold.known_breach.empty() ? o.threshold.why
+                                                               : o.threshold.known_breach));
   }
   return md;
 }

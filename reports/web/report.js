@@ -63,6 +63,7 @@
     if (hasFriction()) nav.appendChild(el('a', { href: '#friction' }, 'Friction'));
     if (hasImpacts()) nav.appendChild(el('a', { href: '#impacts' }, 'Measured impacts'));
     if (hasValidity()) nav.appendChild(el('a', { href: '#validity' }, 'Physical validity'));
+    if (hasScenes()) nav.appendChild(el('a', { href: '#scenes' }, 'Scenes'));
     for (const t of data.tables) nav.appendChild(el('a', { href: '#table-' + slug(t.id) }, t.title));
     if (data.results_file) nav.appendChild(el('a', { href: '#mapping' }, 'Parameter mapping'));
   }
@@ -532,6 +533,22 @@
     main.appendChild(sec);
   }
 
+  // ---- scenes (SPEC §11) ---------------------------------------------------
+  function hasScenes() {
+    return Boolean(data.scenes && data.scenes.tables && data.scenes.tables.length);
+  }
+
+  function renderScenes(main) {
+    if (!hasScenes()) return;
+    const sc = data.scenes;
+    const sec = el('section', { id: 'scenes' });
+    sec.appendChild(el('h2', {}, 'Scenes'));
+    sec.appendChild(el('p', { class: 'note' }, sc.note));
+    for (const t of sc.tables) renderTable(t, sec, 'h3');
+    appendFigures(sec, sc.figures, 'scenes-');
+    main.appendChild(sec);
+  }
+
   // ---- parameter mapping ---------------------------------------------------
   function jsonNode(v) {
     if (v === null || typeof v !== 'object') return document.createTextNode(String(v));
@@ -579,6 +596,7 @@
   renderFriction(main);
   renderImpacts(main);
   renderValidity(main);
+  renderScenes(main);
   for (const t of data.tables) renderTable(t, main);
   if (data.results_file) renderMappings(main);
 

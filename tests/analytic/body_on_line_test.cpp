@@ -292,6 +292,48 @@ TEST(BodyOnLine, RefusesBodiesThatWouldTurn) {
   EXPECT_EQ(tip->face_vertices, 1);
 }
 
+// Issue 49: a 0.1 x 0.3 m block standing on its short face on an incline
+// holds its face while tan(incline) <= w / h (the moments about its centre
+// of mass: friction m g sin a, 0.15 m below it, against the normal force's
+// offset, at most the face's half-width 0.05 m). The premise is checked
+// against that closed-form limit, on both sides of it: on 18.43 deg
+// (tan = 1/3.03 < 1/3) it holds, on 22 deg (tan 0.404 > 1/3, mu 0.8 holds
+// it from sliding) it tips and the closed form is refused, saying so. A
+// thrown block slides with f = mu N: it tips where mu > w / h.
+TEST(BodyOnLine, ATallBlockThatWouldTipIsRefused) {
+  Body block;
+  block.name = "block";
+  block.mass_kg = 1.0;
+  block.shape = Polygon{{Vec2(-0.05, -0.15), Vec2(0.05, -0.15), Vec2(0.05, 0.15), Vec2(-0.05, 0.15)}};
+  ContactPair pair;
+  pair.friction = 0.8;
+  const auto judge = [&](double incline_rad, const Vec2& velocity) {
+    Case c;
+    c.gravity_mps2 = Vec2(0.0, -9.8066);
+    const Vec2 n(-std::sin(incline_rad), std::cos(incline_rad));
+    Body b = block;
+    b.angle_rad = incline_rad;
+    b.velocity_mps = velocity;
+    std::string why;
+    const auto support = translating_support(b, n, &why);
+    EXPECT_TRUE(support.has_value()) << why;
+    return support ? tipping_reason(c, b, pair, n, *support) : std::string("no support");
+  };
+  const double holds = std::atan(1.0 / 3.03);
+  EXPECT_EQ(judge(holds, Vec2::Zero()), "");
+  const std::string tips = judge(22.0 * std::numbers::pi / 180.0, Vec2::Zero());
+  EXPECT_NE(tips.find("would tip"), std::string::npos) << tips;
+  EXPECT_NE(tips.find("it holds"), std::string::npos) << tips;
+  // thrown along level ground: f/N = mu = 0.8 > 1/3 tips it; mu = 0.3 not
+  const Vec2 thrown(1.0, 0.0);
+  EXPECT_NE(judge(0.0, thrown).find("mu: it slides"), std::string::npos);
+  pair.friction = 0.3;
+  EXPECT_EQ(judge(0.0, thrown), "");
+  // frictionless: nothing turns it
+  pair.friction = 0.0;
+  EXPECT_EQ(judge(22.0 * std::numbers::pi / 180.0, Vec2::Zero()), "");
+}
+
 // A block held by friction rests tilted in its compliant static pose
 // (scripts/block_cases.py): the closed form takes it as its rigid limit, a
 // face, while its ends differ in height by at most the static penetration

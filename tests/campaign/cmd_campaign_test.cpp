@@ -268,6 +268,34 @@ TEST(CmdCampaign, TheReportOfACampaignHasItsSection) {
   EXPECT_EQ(md.find("## Parameter mapping"), std::string::npos);
 }
 
+// Issue 49: an axis's name is the user's text; in report.md it is text, not
+// markup (an axis named <img src=x onerror=...> reached it as HTML)
+TEST(CmdCampaign, AnAxisNameIsShownAsTextInTheReport) {
+  const fs::path dir = fresh_dir("markup");
+  const fs::path toml = campaign_file(dir, R"(
+[campaign]
+cases = ["falling_ball"]
+engines = ["analytic"]
+metrics = ["events"]
+
+[[axis]]
+name = "<img src=x onerror=alert(1)> *b*"
+key = "output_interval"
+values = [1e-3, 2e-3]
+)");
+  ASSERT_EQ(campaign({"run", toml.string(), "--out", (dir / "parts").string(), "-q"}).exit.code, 0);
+  ASSERT_EQ(campaign({"merge", (dir / "parts").string(), "--out", (dir / "m.h5").string(), "-q"})
+                .exit.code,
+            0);
+  const Finished r = run_planarbench({"report", (dir / "m.h5").string(), "--out", (dir / "r").string()});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  const std::string md = file_bytes(dir / "r" / "report.md");
+  EXPECT_NE(md.find("## Campaign"), std::string::npos);
+  EXPECT_EQ(md.find("<img"), std::string::npos) << md.substr(0, 2000);
+  EXPECT_NE(md.find("&lt;img src=x onerror=alert(1)&gt; \\*b\\*"), std::string::npos)
+      << md.substr(0, 2000);
+}
+
 TEST(CmdCampaign, MergeWithAMissingShardExitsTwoNamingTheRuns) {
   const fs::path dir = fresh_dir("missing");
   const fs::path toml = campaign_file(dir);

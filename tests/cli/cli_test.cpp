@@ -169,6 +169,41 @@ TEST(Cli, ReadmeSnippetReadsTheResults) {
 }
 
 // --jobs 2 gives the same datasets as --jobs 1 (results land by task index).
+// Issue 49: a legal case file name of 244 bytes (249 with ".toml") made
+// `report` fail writing its figures (names past 255 bytes) and leave an
+// empty figures/; the figures' names are cut now (file_id.hpp). And a
+// report whose write fails (here report.md is a folder) leaves no folder it
+// created behind.
+TEST(Cli, AReportOfALongCaseNameWritesAndAFailedOneLeavesNoFolder) {
+  const auto dir = work_dir() / "long_name";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string name(244, 'c');
+  fs::copy_file(fs::path(PB_SOURCE_DIR) / "cases/falling_ball.toml", dir / (name + ".toml"));
+  const auto results = dir / "r.h5";
+  ASSERT_EQ(run("run --case " + (dir / (name + ".toml")).string() +
+                " --engine analytic --set duration=0.1 --quiet --out " + results.string())
+                .exit_code,
+            0);
+  const auto out = dir / "report";
+  const auto r = run("report " + results.string() + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::size_t figures = 0;
+  for (const auto& f : fs::directory_iterator(out / "figures")) {
+    ++figures;
+    // a figure's id is at most kMaxFileIdBytes = 120 (file_id.hpp) plus its
+    // suffix ("_episode0", ".svg": under 40); 200 leaves the writer's
+    // temporary (".<name>.tmp.<pid>", 13 more) inside a file name's 255
+    EXPECT_LE(f.path().filename().string().size(), 200u) << f.path();
+  }
+  EXPECT_GT(figures, 0u);
+  const auto failed = dir / "failed";
+  fs::create_directories(failed / "report.md");  // a folder where the page goes
+  const auto f = run("report " + results.string() + " --out " + failed.string());
+  EXPECT_NE(f.exit_code, 0) << f.output;
+  EXPECT_FALSE(fs::exists(failed / "figures")) << f.output;
+}
+
 TEST(Cli, JobsDoNotChangeTheResults) {
   const auto a = work_dir() / "jobs1.h5";
   const auto b = work_dir() / "jobs2.h5";
@@ -207,19 +242,27 @@ TEST(Cli, RepeatKeepsTheResultsAndTheMedianCost) {
   EXPECT_FALSE(fs::exists(work_dir() / "repeat0.h5"));
 }
 
-// The CI gate: every case on every engine against the committed thresholds
-// (cases/thresholds.toml, each tolerance derived in its `why`). Fails when
-// any engine or the reference solver drifts out of tolerance.
-TEST(Gate, FullMatrixPassesTheCommittedThresholds) {
-  const auto out = work_dir() / "gate_all.h5";
-  const auto r = run("run --case all --engine all --jobs 2 --quiet --out " + out.string());
+// The CI gate on the full matrix (every case on every engine against
+// cases/thresholds.toml) is part of tests/durability/determinism_test.cpp:
+// the pinned matrix run serves it (CI time: one full matrix under the
+// sanitizers is ~70 s of both cores).
+
+// The scenes' gate on CI's subset (cases/scenes/thresholds.toml): the small
+// scenes on the reference and the truth, each band derived there; the bands
+// of the larger scenes (scripts/report.sh runs them) are skipped and counted.
+// pyramid_5 is not among them: its reference run is ~90 s under the
+// sanitizers, and ReferenceScenes.PyramidReleasedTouchingCarriesItsWeight...
+// (tests/reference/scenes_test.cpp) runs it and asserts its statics.
+TEST(Gate, SmallScenesPassTheCommittedSceneThresholds) {
+  const auto out = work_dir() / "gate_scenes.h5";
+  const auto r = run("run --case stack_2,stack_10,cradle_5 --engine reference,analytic "
+                     "--jobs 2 --quiet --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto c = check_committed(out);
+  const auto c = run("check --cases-in-results-only --thresholds " + std::string(PB_SOURCE_DIR) +
+                     "/cases/scenes/thresholds.toml " + out.string());
   EXPECT_EQ(c.exit_code, 0) << c.output;
   EXPECT_TRUE(contains(c.output, " 0 breached")) << c.output;
-  // the JUnit XML and the Markdown summary land beside the results
-  EXPECT_TRUE(fs::exists(work_dir() / "gate_all.junit.xml"));
-  EXPECT_TRUE(fs::exists(work_dir() / "gate_all.summary.md"));
+  EXPECT_TRUE(contains(c.output, "skipped (--cases-in-results-only)")) << c.output;
 }
 
 // a copy of the committed thresholds stating that its bands also hold for `covers`
@@ -473,8 +516,12 @@ fs::path sliding_mujoco() {
   return out;
 }
 
-fs::path sliding_mujoco_thresholds() {
-  const auto p = work_dir() / "known_sliding.toml";
+// the committed [[threshold]] entries of one case and engine (those with a
+// known_breach only, when asked), as a thresholds file of their own
+fs::path committed_entries(const std::string& case_name, const std::string& engine,
+                           bool known_breaches_only) {
+  const auto p = work_dir() / fmt::format("entries_{}_{}{}.toml", case_name, engine,
+                                          known_breaches_only ? "_known" : "");
   std::ifstream in(std::string(PB_SOURCE_DIR) + "/cases/thresholds.toml");
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::ofstream f(p);
@@ -482,13 +529,18 @@ fs::path sliding_mujoco_thresholds() {
   for (std::size_t at = text.find(head); at != std::string::npos;) {
     const std::size_t next = text.find(head, at + head.size());
     const std::string entry = text.substr(at, next == std::string::npos ? next : next - at);
-    if (contains(entry, "case = \"sliding\"\n") && contains(entry, "engine = \"mujoco\"\n") &&
-        contains(entry, "known_breach")) {
+    if (contains(entry, "case = \"" + case_name + "\"\n") &&
+        contains(entry, "engine = \"" + engine + "\"\n") &&
+        (!known_breaches_only || contains(entry, "known_breach"))) {
       f << entry;
     }
     at = next;
   }
   return p;
+}
+
+fs::path sliding_mujoco_thresholds() {
+  return committed_entries("sliding", "mujoco", true);
 }
 
 Outcome check_known_damaged(const std::string& kind) {
@@ -558,6 +610,48 @@ TEST(Gate, ATruthOfAnotherKindIsRefused) {
                                  "(physics.mode \"converged reference\"; derived for "
                                  "\"independent\"))"))
       << c.output;
+}
+
+// issue 49: every float of block_slide.reference's events set to NaN passed
+// the gate (the reference's bands there read no episode); a NaN where an
+// episode must hold a number is invalid data wherever it is, exit 1
+TEST(Gate, NanEpisodesOfAnyEngineAreInvalidData) {
+  const auto good = work_dir() / "events_nan.h5";
+  ASSERT_EQ(run("run --case block_slide --engine analytic,reference --quiet --out " +
+                good.string()).exit_code, 0);
+  const auto damaged = work_dir() / "events_nan_all.h5";
+  ASSERT_EQ(damage_copy(good, damaged, "events_nan_all", "/runs/block_slide/reference"), "");
+  const std::string thresholds = committed_entries("block_slide", "reference", false).string();
+  const auto as_run = run("check --thresholds " + thresholds + " " + good.string());
+  EXPECT_EQ(as_run.exit_code, 0) << as_run.output;
+  const auto c = run("check --thresholds " + thresholds + " " + damaged.string());
+  EXPECT_EQ(c.exit_code, 1) << c.output;
+  EXPECT_TRUE(contains(c.output, "/runs/block_slide/reference/events, field onset_time_s"))
+      << c.output;
+}
+
+// issue 49: what the file holds is the file's fault, named as such: a
+// physics.mode that is a number (it ended in nlohmann's type_error, exit 3)
+// and a run group naming no engine (it was blamed on --engine)
+TEST(Gate, AFileOfAnotherShapeIsRefusedNamingTheObject) {
+  const auto good = work_dir() / "shape.h5";
+  ASSERT_EQ(run("run --case concave_corner --engine analytic,reference --quiet --out " +
+                good.string()).exit_code, 0);
+  const std::string thresholds = std::string(PB_SOURCE_DIR) + "/cases/thresholds.toml ";
+  const auto number = work_dir() / "shape_mode_number.h5";
+  ASSERT_EQ(damage_copy(good, number, "mode_number", "/runs/concave_corner/analytic"), "");
+  const auto m = run("check --thresholds " + thresholds + number.string());
+  EXPECT_EQ(m.exit_code, 2) << m.output;
+  EXPECT_TRUE(contains(m.output, "physics.mode \"7\"")) << m.output;
+  EXPECT_FALSE(contains(m.output, "json.exception")) << m.output;
+  const auto renamed = work_dir() / "shape_engine_renamed.h5";
+  ASSERT_EQ(damage_copy(good, renamed, "engine_renamed", "/runs/concave_corner/reference"), "");
+  const auto e = run("check --thresholds " + thresholds + renamed.string());
+  EXPECT_EQ(e.exit_code, 2) << e.output;
+  EXPECT_TRUE(contains(e.output, "/runs/concave_corner/referenceo: names no engine of this build"))
+      << e.output;
+  EXPECT_TRUE(contains(e.output, "did you mean 'reference'")) << e.output;
+  EXPECT_FALSE(contains(e.output, "--engine")) << e.output;
 }
 
 // issue 31: the reference's bands assume a bound on its accepted steps

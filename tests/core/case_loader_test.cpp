@@ -416,7 +416,7 @@ TEST(BadInput, UnknownKeyWithDidYouMean) {
                      4, "case.durration", "did you mean 'duration'?");
   // far from every key: no guess, but the list of allowed keys
   EXPECT_INPUT_ERROR(error_of(kBase + "[extras]\nx = 1\n"), "t.toml", 23, "extras",
-                     "unknown key; allowed: case, bodies, joints, contacts, settings");
+                     "unknown key; allowed: case, bodies, generate, joints, contacts, contact_groups, settings");
 }
 
 TEST(BadInput, KeyOfAnotherLaw) {

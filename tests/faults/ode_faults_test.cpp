@@ -81,7 +81,10 @@ TEST(OdeFaults, LongFreeFallIsNotABlowUp) {
 // applied explicitly gives an infinite force at the first overlap. Given to
 // ODE it aborted the process ("ODE INTERNAL ERROR 1: assertion
 // !bSafeNormalize4Fault failed in dxNormalize4()"); the run now ends before
-// that step, named.
+// that step, named: the runner's check of every sampled contact (issue 49)
+// sees the infinite force of the first overlap's sample, before the step
+// that would give it to ODE (the adapter's own check, "not finite", is the
+// next line of defence for a force computed between samples).
 TEST(OdeFaults, NonFiniteForceEndsTheRunBeforeOdeSeesIt) {
   Case c = faults_test::shipped_case("falling_ball", {{"duration", "0.8"}});
   std::get<KelvinVoigt>(c.contacts.at(0).law).stiffness_n_per_m =
@@ -90,7 +93,9 @@ TEST(OdeFaults, NonFiniteForceEndsTheRunBeforeOdeSeesIt) {
   const RunResult r =
       run_engine(*e, c, faults_test::engine_keys({{"ode.mode", "inject"}, {"ode.substeps", "1"}}));
   ASSERT_EQ(r.status, RunStatus::diverged) << r.reason;
-  EXPECT_NE(r.reason.find("not finite"), std::string::npos) << r.reason;
+  EXPECT_NE(r.reason.find("non-finite contact between 'ground' and 'ball'"), std::string::npos)
+      << r.reason;
+  EXPECT_NE(r.reason.find("force inf N"), std::string::npos) << r.reason;
   EXPECT_NEAR(r.diverged_at_s, 0.72501, 3e-4);
 }
 

@@ -53,6 +53,34 @@ nlohmann::json read_study(const fs::path& file) {
 // a quick study: two cheap engines, 2 folds, 4 evaluations per fit
 const char* kQuick = "--engine box2d,reference_exact --folds 2 --max-evaluations 4 -q";
 
+// a quick study's fit file of `train` in `dir`; "" when the fit failed
+fs::path quick_fit(const fs::path& dir, const fs::path& train) {
+  const fs::path fit = dir / "fit.h5";
+  const Finished f =
+      impacts(fmt::format("fit --data {} --out {} {}", train.string(), fit.string(), kQuick));
+  EXPECT_EQ(f.exit.code, 0) << f.err;
+  return f.exit.code == 0 ? fit : fs::path();
+}
+
+// `score` of `train` with a copy of `fit` whose description's JSON `d` (its
+// models list `m`) the Python statement `edit` changed; the score file to
+// write is dir/score.h5
+Finished score_edited(const fs::path& dir, const fs::path& train, const fs::path& fit,
+                      const std::string& edit) {
+  const fs::path bad = dir / "bad.h5";
+  fs::copy_file(fit, bad, fs::copy_options::overwrite_existing);
+  const std::string py = fmt::format(
+      "/usr/bin/python3 -c 'import h5py, json, sys\n"
+      "with h5py.File(sys.argv[1], \"r+\") as f:\n"
+      "    c = f[\"campaign\"]; d = json.loads(c.attrs[\"description\"]); m = d[\"models\"]\n"
+      "    {}\n"
+      "    c.attrs[\"description\"] = json.dumps(d)\n' {}",
+      edit, bad.string());
+  EXPECT_EQ(std::system(py.c_str()), 0) << edit;
+  return impacts(fmt::format("score --data {} --params {} --out {} -q", train.string(),
+                             bad.string(), (dir / "score.h5").string()));
+}
+
 }  // namespace
 
 TEST(CmdImpacts, FitThenScoreFrozenParametersOnAnotherFile) {
@@ -218,34 +246,44 @@ TEST(CmdImpacts, ScoringTheFileFittedToIsLabelledInSample) {
 TEST(CmdImpacts, ScoreRefusesFrozenParametersOutsideTheFitsBounds) {
   const fs::path dir = fresh_dir("score_bounds");
   const fs::path train = impacts_file(dir, "train.mat", 1);
-  const fs::path fit = dir / "fit.h5";
-  ASSERT_EQ(impacts(fmt::format("fit --data {} --out {} {}", train.string(), fit.string(), kQuick))
-                .exit.code,
-            0);
+  const fs::path fit = quick_fit(dir, train);
+  ASSERT_FALSE(fit.empty());
   for (const char* value : {"5e-324", "-5.0", "1e300", "float(\"nan\")"}) {
-    const fs::path bad = dir / "bad.h5";
-    fs::copy_file(fit, bad, fs::copy_options::overwrite_existing);
     // every whole-file fit's first parameter set to `value`
-    const std::string py = fmt::format(
-        "/usr/bin/python3 -c 'import h5py, json, sys\n"
-        "with h5py.File(sys.argv[1], \"r+\") as f:\n"
-        "    c = f[\"campaign\"]; d = json.loads(c.attrs[\"description\"])\n"
-        "    for m in d[\"models\"]:\n"
-        "        for x in m[\"fits\"]:\n"
-        "            if x[\"parameters\"]: x[\"parameters\"][0] = {}\n"
-        "    c.attrs[\"description\"] = json.dumps(d)\n' {}",
-        value, bad.string());
-    ASSERT_EQ(std::system(py.c_str()), 0) << value;
-    const fs::path out = dir / "score.h5";
-    const Finished s = impacts(fmt::format("score --data {} --params {} --out {} -q",
-                                           train.string(), bad.string(), out.string()));
+    const Finished s = score_edited(
+        dir, train, fit,
+        fmt::format("for x in (x for y in m for x in y[\"fits\"] if x[\"parameters\"]): "
+                    "x[\"parameters\"][0] = {}",
+                    value));
     EXPECT_EQ(s.exit.code, 2) << value << ": " << s.err;
     // NaN is not JSON: the description itself is refused, naming it
     const bool nan = std::string(value).find("nan") != std::string::npos;
     EXPECT_NE(s.err.find(nan ? "'description' is not JSON" : "the bounds its fit searches"),
               std::string::npos)
         << value << ": " << s.err;
-    EXPECT_FALSE(fs::exists(out)) << value;
+    EXPECT_FALSE(fs::exists(dir / "score.h5")) << value;
+  }
+}
+
+// Issue 49: a model renamed in the fit file was silently not scored, and one
+// listed twice was accepted with no word of which counts; both refused now,
+// exit 2, naming the fit file and the model, and no score file is written
+TEST(CmdImpacts, ScoreRefusesARenamedOrRepeatedModel) {
+  const fs::path dir = fresh_dir("score_models");
+  const fs::path train = impacts_file(dir, "train.mat", 1);
+  const fs::path fit = quick_fit(dir, train);
+  ASSERT_FALSE(fit.empty());
+  struct Edit {
+    const char* python;  // applied to the description's models list, m
+    const char* expected;
+  };
+  for (const Edit& e : {Edit{"m[0][\"name\"] += \"x\"", "is no model `impacts score` knows"},
+                        Edit{"m.append(m[0])", "twice"}}) {
+    const Finished s = score_edited(dir, train, fit, e.python);
+    EXPECT_EQ(s.exit.code, 2) << e.python << ": " << s.err;
+    EXPECT_NE(s.err.find(e.expected), std::string::npos) << e.python << ": " << s.err;
+    EXPECT_NE(s.err.find("bad.h5"), std::string::npos) << s.err;
+    EXPECT_FALSE(fs::exists(dir / "score.h5")) << e.python;
   }
 }
 

@@ -22,6 +22,8 @@ broken writer would (issue 24). KIND:
     velocity_nan      bodies/ball/velocity row 200 is NaN
     force_nan         contacts row 0 has force_n NaN
 
+    events_nan_all    every float field of every events row is NaN (issue 49)
+
   a known breach's value (check fails it, exit 1; issue 31, tests/cli/cli_test.cpp):
     events_lost       events keeps no rows: every episode lost
     impulse_nan       events row 0 has impulse NaN
@@ -29,6 +31,10 @@ broken writer would (issue 24). KIND:
 
   another truth (check refuses the run, exit 2; issue 31): RUN is the analytic run
     truth_converged   its mapping's physics.mode says "converged reference"
+
+  a file check refuses (exit 2, naming the object; issue 49): RUN's group
+    mode_number       its mapping's physics.mode is the number 7
+    engine_renamed    the run's group renamed to its engine's name + "o"
 
   a broken assumption (check fails the run's bands that assume it, exit 1; issue 31)
     steps_many        the run's `steps` attribute says 10**6 accepted steps
@@ -117,6 +123,18 @@ def main():
             r["events"][...] = rows
         elif kind == "steps_many":
             r.attrs["steps"] = np.int64(10**6)
+        elif kind == "events_nan_all":
+            rows = r["events"][()]
+            for name in rows.dtype.names:
+                if rows.dtype[name].kind == "f":
+                    rows[name] = np.nan
+            r["events"][...] = rows
+        elif kind == "mode_number":
+            mapping = json.loads(r.attrs["mapping"])
+            mapping["physics"]["mode"] = 7
+            r.attrs["mapping"] = json.dumps(mapping)
+        elif kind == "engine_renamed":
+            f.move(run, run + "o")
         elif kind == "truth_converged":
             mapping = json.loads(r.attrs["mapping"])
             mapping["physics"]["mode"] = "converged reference"

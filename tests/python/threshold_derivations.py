@@ -235,8 +235,11 @@ def expected_problems(th, constants):
         return problems
     rng, exprs = th["expected"], th["expected_bound"]
     if not (isinstance(rng, list) and len(rng) == 2 and all(
-            isinstance(v, (int, float)) and not isinstance(v, bool) for v in rng)):
-        return [f"expected = {rng!r}: give [min, max], two numbers"]
+            isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+            for v in rng)):
+        return [f"expected = {rng!r}: give [min, max], two finite numbers"]
+    if not isinstance(th["expected_why"], str):
+        return [f"expected_why = {th['expected_why']!r}: give the mechanism in words (a string)"]
     if not (isinstance(exprs, list) and len(exprs) == 2 and all(isinstance(e, str) for e in exprs)):
         return [f"expected_bound = {exprs!r}: give two expressions as strings"]
     ends = []
@@ -264,12 +267,15 @@ def expected_problems(th, constants):
 
 
 def constants_used(expr, table):
-    """every constant of `table` an expression uses, directly or through others"""
-    out = set()
-    for name in set(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", expr)):
-        if name in table and isinstance(table[name], str) and name not in out:
-            out.add(name)
-            out |= constants_used(table[name], table)
+    """every constant of `table` an expression uses, directly or through others
+    (a constant defined through itself or a cycle is visited once: its
+    evaluation reports it, evaluate_constants)"""
+    out, todo = set(), [expr]
+    while todo:
+        for name in set(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", todo.pop())):
+            if name in table and isinstance(table[name], str) and name not in out:
+                out.add(name)
+                todo.append(table[name])
     return out
 
 
@@ -375,12 +381,20 @@ def check(doc):
     if not isinstance(truths, dict):
         offences.append(f"[truths] must be a table of case = \"kind\" (got {truths!r:.40})")
         truths = {}
-    for case in sorted({th.get("case") for th in doc.get("threshold", [])
+    thresholds = doc.get("threshold", [])
+    if not isinstance(thresholds, list):
+        offences.append(f"threshold must be an array of tables, [[threshold]] (got {thresholds!r:.40})")
+        thresholds = []
+    for i, th in enumerate(thresholds):
+        if not isinstance(th, dict):
+            offences.append(f"threshold[{i}] must be a table, [[threshold]] (got {th!r:.40})")
+    thresholds = [th for th in thresholds if isinstance(th, dict)]
+    for case in sorted({str(th.get("case")) for th in thresholds
                         if th.get("against") == "truth"}):
         if case not in truths:
             offences.append(f"[truths] does not list {case}: state the kind of truth its bands "
                             "against \"truth\" were derived with")
-    for th in doc.get("threshold", []):
+    for th in thresholds:
         table = doc.get("constants", {})
         category, problems = classify(th, constants, table if isinstance(table, dict) else {})
         row = counts.setdefault(th.get("engine", "?"), dict.fromkeys(
@@ -479,6 +493,26 @@ def self_test():
     _, _, errors = check(tomllib.loads('[constants]\na = "b + 1"\nb = "1"\n'))
     if not errors:
         failures.append("self-test: a constant using one defined below it was accepted")
+    # issue 49: each of these ended in a traceback; each is one line now
+    for label, doc in {
+        "a constant defined through itself": '[constants]\na = "a + 1"\n' + entry('rtol = 1\nbound = "a"'),
+        "a cycle of constants": '[constants]\na = "b"\nb = "a"\n' + entry('rtol = 1\nbound = "a"'),
+        "a threshold given as a string": 'threshold = "x"\n',
+        "a threshold array holding a string": 'threshold = ["x"]\n',
+        "an expected range holding NaN": entry(
+            'rtol = 0.01\nbound = "1"\nknown_breach = "k"\nexpected = [nan, 2.1]\n'
+            'expected_bound = ["0", "2"]\nexpected_why = "m"'),
+        "expected_why a number": entry(
+            'rtol = 0.01\nbound = "1"\nknown_breach = "k"\nexpected = [0.0, 2.1]\n'
+            'expected_bound = ["0", "2"]\nexpected_why = 5'),
+    }.items():
+        try:
+            _, offences, errors = check(tomllib.loads(doc))
+        except Exception as e:  # noqa: BLE001 - the self-test reports any traceback
+            failures.append(f"self-test '{label}': raised {type(e).__name__}: {e}")
+            continue
+        if not offences and not errors:
+            failures.append(f"self-test '{label}': accepted")
     if abs(round_up_2_significant(0.0314159) - 0.032) > 1e-15 or \
             abs(round_up_2_significant(0.03) - 0.03) > 1e-15:
         failures.append("self-test: rounding up to 2 significant digits is wrong")

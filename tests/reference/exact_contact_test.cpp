@@ -166,6 +166,58 @@ TEST(ExactContact, FaceSpreadIsTheCornersDepthWeightedVariance) {
   EXPECT_EQ(pl.evaluate(Pose{}, Pose{Vec2(0, one_in), a}).spread_m2, 0.0);
 }
 
+// two convex polygons: a box of w x h centred at the origin
+Polygon box(double w, double h) {
+  return Polygon{{Vec2(-w / 2, -h / 2), Vec2(w / 2, -h / 2), Vec2(w / 2, h / 2), Vec2(-w / 2, h / 2)}};
+}
+
+TEST(ExactContact, EqualBoxesStackedPressByTheirOverlap) {
+  // box b on box a, both 0.4 x 0.1, b lowered into a by delta: the overlap
+  // along y is delta, along x the whole width; each corner of b lies on a's
+  // side line (the outline's depth there is 0, issue 44)
+  const double delta = 3e-5;  // m
+  const ExactContact ec(box(0.4, 0.1), box(0.4, 0.1));
+  const ContactGeometry g = ec.evaluate(Pose{Vec2(0, 0), 0.0}, Pose{Vec2(0, 0.1 - delta), 0.0});
+  EXPECT_NEAR(g.gap_m, -delta, 1e-15);
+  EXPECT_NEAR((g.normal - Vec2(0, 1)).norm(), 0.0, 1e-15);
+  // one force at the middle of the face, no moment
+  EXPECT_NEAR(g.point_b_m.x(), 0.0, 1e-15);
+  EXPECT_NEAR(g.spread_m2, 0.04, 1e-14);  // the two corners at +-w/2: (w/2)^2
+  expect_consistent(g);
+}
+
+TEST(ExactContact, HalfOverlappingBricksActAtTheOverlapsMiddle) {
+  // brick b over the right half of brick a (offset 0.2 of 0.4): the clipped
+  // face runs from b's left corner to a's right end, its middle at x = 0.1
+  const double delta = 1e-4;
+  const ExactContact ec(box(0.4, 0.2), box(0.4, 0.2));
+  const ContactGeometry g = ec.evaluate(Pose{Vec2(0, 0), 0.0}, Pose{Vec2(0.2, 0.2 - delta), 0.0});
+  EXPECT_NEAR(g.gap_m, -delta, 1e-15);
+  EXPECT_NEAR(g.point_b_m.x(), 0.1, 1e-14);
+  // tilted: b's left corner deeper, its weight moves the point left, still
+  // between the clipped ends, and the penetration is the deeper end's
+  const double phi = 1e-4;  // rad, b turned counter-clockwise: its left corner dips
+  const ContactGeometry t = ec.evaluate(Pose{Vec2(0, 0), 0.0}, Pose{Vec2(0.2, 0.2 - delta), phi});
+  EXPECT_LT(t.point_b_m.x(), 0.1);
+  EXPECT_GT(t.point_b_m.x(), 0.0);
+  EXPECT_GT(-t.gap_m, delta);
+  expect_consistent(t);
+}
+
+TEST(ExactContact, ConvexPolygonsApartAreTheirDistance) {
+  // a square of side 1 and one turned 45 deg whose corner points at it, 0.3 m off
+  const ExactContact ec(box(1.0, 1.0), box(1.0, 1.0));
+  const double r = std::sqrt(0.5);  // the turned square's centre-to-corner
+  const ContactGeometry g = ec.evaluate(Pose{}, Pose{Vec2(0.5 + 0.3 + r, 0.0), kPi / 4});
+  EXPECT_NEAR(g.gap_m, 0.3, 1e-14);
+  EXPECT_NEAR((g.normal - Vec2(1, 0)).norm(), 0.0, 1e-12);
+  expect_consistent(g);
+  // a concave polygon has no exact routine with a polygon (its outline)
+  const Polygon l{{Vec2(0, 0), Vec2(2, 0), Vec2(2, 1), Vec2(1, 1), Vec2(1, 2), Vec2(0, 2)}};
+  EXPECT_FALSE(ExactContact::supported(l, box(1.0, 1.0)));
+  EXPECT_TRUE(ExactContact::supported(box(1.0, 1.0), box(2.0, 1.0)));
+}
+
 TEST(ExactContact, SupportedPairs) {
   EXPECT_TRUE(ExactContact::supported(HalfPlane{}, Circle{1}));
   EXPECT_TRUE(ExactContact::supported(Circle{1}, Ellipse{1, 2}));

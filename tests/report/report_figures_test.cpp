@@ -12,6 +12,7 @@
 
 #include "planarbench/case_loader.hpp"
 #include "report_test_runs.hpp"
+#include "file_id.hpp"
 
 namespace pb::internal {
 namespace {
@@ -122,9 +123,23 @@ TEST(CaseFigures, OtherCasesGetGenericPlots) {
   EXPECT_DOUBLE_EQ(series_of(figures[4], "analytic")->value[0], -1.0);
 }
 
-TEST(SafeName, ReplacesAnythingButWordCharacters) {
-  EXPECT_EQ(safe_name("a b/c.d-e_f"), "a_b_c_d-e_f");
-  EXPECT_EQ(safe_name(""), "_");
+TEST(FileId, ReplacesAnythingButWordCharacters) {
+  EXPECT_EQ(file_id("a b/c.d-e_f"), "a_b_c_d-e_f");
+  EXPECT_EQ(file_id(""), "_");
+}
+
+// Issue 49: a case file name of 244 bytes (legal: 249 with ".toml") gave
+// figure files past a file name's 255 bytes. A long name is cut to
+// kMaxFileIdBytes, its tail a hash of the whole: two names differing only
+// past the cut stay two files, the same name is the same file.
+TEST(FileId, ALongNameFitsAFileNameAndStaysDistinct) {
+  const std::string a(244, 'a');
+  const std::string b = a.substr(0, 243) + "b";
+  EXPECT_EQ(file_id(a).size(), internal::kMaxFileIdBytes);
+  EXPECT_NE(file_id(a), file_id(b));
+  EXPECT_EQ(file_id(a), file_id(std::string(244, 'a')));
+  EXPECT_EQ(file_id(a).substr(0, 100), a.substr(0, 100));
+  EXPECT_EQ(file_id(std::string(120, 'c')), std::string(120, 'c'));  // at the limit: kept
 }
 
 }  // namespace

@@ -108,6 +108,40 @@ TEST(RunValidity, EachDamagedDatasetIsNamedWithItsRowsAndFirstRow) {
   EXPECT_NE(text.find("row 100"), std::string::npos) << text;
 }
 
+// Issue 49: every float of a run's events table set to NaN passed the gate.
+// An episode's onset, approach speed, peak force and impulse are numbers once
+// it has begun; its offset, separation speed, restitution (an episode still
+// open at the end) and deepest penetration (an engine that does not report
+// it) may be NaN, never infinite. A contact's normal and point are numbers.
+TEST(RunValidity, NanEventsAndContactGeometryAreInvalid) {
+  const Case c = test::falling_ball_case();
+  CaseRuns cr = test::falling_ball_runs(c);
+  RunResult& r = run_of(cr, "box2d");
+  ASSERT_FALSE(r.events.empty());
+  ContactEpisode open = r.events.front();
+  open.offset_time_s = open.separation_speed_mps = open.restitution = kNaN;
+  open.max_penetration_m = kNaN;
+  r.events.push_back(open);  // an open episode: valid
+  EXPECT_TRUE(invalid_runs(cr).empty());
+
+  ContactEpisode& e = r.events.front();
+  e.onset_time_s = e.approach_speed_mps = e.peak_force_n = e.impulse_ns = kNaN;
+  e.restitution = std::numeric_limits<double>::infinity();
+  r.contacts[2].sample.normal.x() = kNaN;
+  r.contacts[5].sample.point_m.y() = -std::numeric_limits<double>::infinity();
+  r.contacts[6].sample.tangential_force_n = std::numeric_limits<double>::infinity();
+  std::vector<std::string> named;
+  for (const auto& f : invalid_runs(cr)) {
+    EXPECT_EQ(f.engine, "box2d");
+    named.push_back(f.dataset.substr(f.dataset.rfind('/') + 1) + "." + f.field);
+  }
+  const std::vector<std::string> expected = {
+      "contacts.normal", "contacts.point_m", "contacts.tangential_force_n",
+      "events.onset_time_s", "events.approach_speed_mps", "events.peak_force_n",
+      "events.impulse_ns", "events.restitution"};
+  EXPECT_EQ(named, expected);
+}
+
 TEST(RunValidity, AnUnsupportedRunHasNoDataToCheck) {
   const Case c = test::falling_ball_case();
   const CaseRuns cr = test::falling_ball_runs(c);  // its reference is unsupported

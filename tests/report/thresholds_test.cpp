@@ -202,6 +202,28 @@ TEST(Thresholds, JunitSkipsKnownBreachesAndFailsTheRest) {
   EXPECT_NE(x.find("<property name=\"outcome\" value=\"known breach\"/>"), std::string::npos);
 }
 
+// Issue 49: a why or a run's reason holding a control character made the
+// JUnit file stop being XML (XML 1.0 has no way to write U+0007), and markup
+// reached the Markdown summary. The XML holds no raw control character but
+// the newlines between its elements, its text's newline as &#10;, the BEL as
+// U+FFFD; the summary shows the markup as text.
+TEST(Thresholds, ControlCharactersAndMarkupStayText) {
+  Threshold t = band("ode", 0.01);
+  t.why = "a\x07" "bell <b>\nline";
+  const auto out = check_thresholds({t}, {value("ode", 0.5, 0.8)}, {});
+  const std::vector<std::string> diverged = {"c.e: <img src=x onerror=alert(1)>\x01"};
+  const std::string x = junit_xml(out, diverged, {});
+  for (const char ch : x) {
+    EXPECT_FALSE(static_cast<unsigned char>(ch) < 0x20 && ch != '\n') << static_cast<int>(ch);
+  }
+  EXPECT_NE(x.find("a\xEF\xBF\xBD" "bell &lt;b&gt;&#10;line"), std::string::npos) << x;
+  EXPECT_EQ(x.find("<img"), std::string::npos) << x;
+  const std::string md = markdown_summary(out, diverged, {});
+  EXPECT_EQ(md.find("<img"), std::string::npos) << md;
+  EXPECT_EQ(md.find("<b>"), std::string::npos) << md;
+  EXPECT_NE(md.find("&lt;img src=x onerror=alert(1)&gt;"), std::string::npos) << md;
+}
+
 class ThresholdsFile : public ::testing::Test {
  protected:
   void SetUp() override {

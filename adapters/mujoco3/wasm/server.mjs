@@ -23,6 +23,7 @@
 //   3 SOLREFS pair_solref[2 npair], per contact solref[2], exclude
 //   4 RUN    n: n more steps
 //   5 QUIT
+//   6 STATS                              1 INFO  JSON: the arena's size and use
 // BATCH: count, count records, then asking (0 or 1) and, when 1, the
 // question: warnings, qpos, qvel, ncon, contacts (16 numbers each: geom1,
 // geom2, dist, pos[3], frame[9], exclude). The C++ side answers SOLREFS and
@@ -94,7 +95,15 @@ function warnings(out) {
     s.delete();
   }
   w.delete();
-  out.push(...number, ...info);
+  append(out, number);
+  append(out, info);
+}
+
+// appends every number of `values` to `out`: a loop, not push(...values),
+// whose arguments live on the stack (a 1000-body scene's record is 1e5
+// numbers, past V8's limit)
+function append(out, values) {
+  for (let i = 0; i < values.length; i++) out.push(values[i]);
 }
 
 function pushContact(out, c) {
@@ -131,7 +140,9 @@ function forward(records) {
       asked = 1;
       const question = [];
       warnings(question);
-      question.push(...d.qpos, ...d.qvel, n);
+      append(question, d.qpos);
+      append(question, d.qvel);
+      question.push(n);
       for (const c of held) pushContact(question, c);
       sendBatch(records, question);
       records.length = 0;
@@ -162,7 +173,8 @@ function forward(records) {
   mj.mj_checkAcc(m, d);
   const rec = [asked];
   warnings(rec);
-  rec.push(...d.qpos, ...d.qvel);
+  append(rec, d.qpos);
+  append(rec, d.qvel);
   const k = d.ncon;
   rec.push(k);
   if (k > 0) {
@@ -188,9 +200,10 @@ function forward(records) {
 // BATCH: the records so far, then the question (none: asking 0)
 function sendBatch(records, question) {
   const out = [records.length];
-  for (const r of records) out.push(...r);
+  for (const r of records) append(out, r);
   if (question) {
-    out.push(1, ...question);
+    out.push(1);
+    append(out, question);
   } else {
     out.push(0);
   }
@@ -264,6 +277,12 @@ for (;;) {
     run(0);
   } else if (kind === 4) {
     run(numbers(payload)[0]);
+  } else if (kind === 6) {
+    // the arena (contacts, rows, the solver's stack) and the most of it used
+    writeFrame(1, Buffer.from(JSON.stringify({
+      narena_bytes: Number(m.narena), maxuse_arena_bytes: Number(d.maxuse_arena),
+      most_contacts: d.maxuse_con, most_rows: d.maxuse_efc,
+    })));
   } else {
     writeFrame(9, Buffer.from(`unknown command ${kind}`));
   }

@@ -164,12 +164,12 @@ std::vector<std::array<double, N>> rows_of(const std::vector<double>& col_major,
 }
 
 // the file's bytes, refused past kMaxMatFileBytes before they are read
-std::string file_bytes(const std::string& path) {
+std::string file_bytes(const std::string& path, const std::string& option) {
   std::error_code ec;
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec) refuse(path, "--data", "is not a readable file (" + ec.message() + ")");
+  if (ec) refuse(path, option, "is not a readable file (" + ec.message() + ")");
   if (size > kMaxMatFileBytes) {
-    refuse(path, "--data",
+    refuse(path, option,
            fmt::format("has {} bytes: a file of impacts has at most {} MB (1e5 impacts take 30 MB)",
                        size, kMaxMatFileBytes >> 20));
   }
@@ -248,19 +248,19 @@ void check_struct_claims(const std::string& path, const std::string& name, matva
 
 }  // namespace
 
-ImpactSet read_impacts(const std::filesystem::path& path) {
+ImpactSet read_impacts(const std::filesystem::path& path, const std::string& option) {
   const std::string p = path.string();
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) refuse(p, "--data", "is not a readable file");
-  const std::string bytes = file_bytes(p);
+  if (!std::filesystem::is_regular_file(path, ec)) refuse(p, option, "is not a readable file");
+  const std::string bytes = file_bytes(p, option);
   // the structure libmatio would allocate by, checked first (mat_preflight.hpp)
   if (const MatProblem problem = mat_v5_problem(bytes); !problem.what.empty()) {
-    refuse(p, problem.variable.empty() ? "--data" : problem.variable, problem.what);
+    refuse(p, problem.variable.empty() ? option : problem.variable, problem.what);
   }
   std::string matio_log;
   const MatioLogScope log_scope(matio_log);
   MatFile mat(Mat_Open(p.c_str(), MAT_ACC_RDONLY));
-  if (!mat) refuse(p, "--data", "is not a MAT v5 file libmatio can read");
+  if (!mat) refuse(p, option, "is not a MAT v5 file libmatio can read");
   for (const char* name : {"data", "v_models"}) {
     MatVar info(Mat_VarReadInfo(mat.get(), name));
     check_struct_claims(p, name, info.get(), bytes.size());
@@ -285,7 +285,7 @@ ImpactSet read_impacts(const std::filesystem::path& path) {
     set.models = rows_of<18>(matrix(p, "v_models", models.get(), n, 18), n);
   }
   if (!matio_log.empty()) {
-    refuse(p, "--data", "is truncated or damaged (libmatio: " + matio_log + ")");
+    refuse(p, option, "is truncated or damaged (libmatio: " + matio_log + ")");
   }
   check_states(set);
   set.sha256 = internal::sha256_hex(bytes);

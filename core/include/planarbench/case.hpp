@@ -135,6 +135,45 @@ struct ContactPair {
   [[nodiscard]] bool has_friction() const { return friction > 0.0; }
 };
 
+// Every pair of a group of bodies may touch, with one law and one friction
+// coefficient (SPEC §11): the pairs are found by a broad phase each step, not
+// declared one by one. A declared pair ([[contacts]]) takes precedence for its
+// two bodies; two fixed bodies never touch. A pair's normal points from its
+// fixed body, else from the body listed first in Case::bodies.
+struct ContactGroup {
+  std::string name;
+  std::vector<int> bodies;     // indices into Case::bodies, ascending, no repeats
+  ContactLaw law;
+  double threshold_m = 1e-10;  // m, as ContactPair::threshold_m
+  double friction = 0.0;       // Coulomb coefficient, as ContactPair::friction
+  [[nodiscard]] bool has_friction() const { return friction > 0.0; }
+};
+
+// The bodies one [[generate]] table made (SPEC §11): named name_1 ..
+// name_count in Case::bodies order, from first_body on. Truths and reports
+// read the scene's structure from here.
+enum class SceneKind { stack, pyramid, row, grid };
+
+[[nodiscard]] const char* scene_kind_name(SceneKind kind);
+
+enum class SceneStart {
+  given,     // positions as generated (a row's gaps, a grid's spacing)
+  touching,  // the rigid pose: every interface at zero penetration
+  resting,   // the static pose of the case's law: each interface pressed by its load
+};
+
+struct GeneratedBodies {
+  std::string name;            // the prefix of the bodies' names
+  SceneKind kind = SceneKind::grid;
+  int first_body = 0;          // index of name_1 in Case::bodies
+  int count = 0;               // bodies made
+  int rows = 0;                // pyramid: rows (row r from the bottom holds rows - r bodies)
+  int support = -1;            // stack, pyramid: the fixed half-plane it stands on, else -1
+  SceneStart start = SceneStart::given;
+  double gap_m = 0.0;          // m, row: surface gap between neighbours; pyramid: within a row
+  [[nodiscard]] int body(int k) const { return first_body + k; }  // k from 0
+};
+
 // ---- truth ------------------------------------------------------------------
 
 enum class TruthKind {
@@ -159,17 +198,25 @@ struct Case {
   Vec2 gravity_mps2 = Vec2(0.0, -9.8066);  // m/s^2
   double duration_s = 1.0;                 // s
   double output_interval_s = 1e-4;         // s, the common output grid
+  // the contacts table holds every this many grid samples (SPEC §11: a
+  // scene's thousands of contacts at every sample would dwarf its bodies);
+  // 1 = every sample, with the dense samples of a young contact set (runner)
+  int contact_output_every = 1;
   TruthKind truth = TruthKind::none;
   // what the reference solver uses as the truth after first contact, if any
   std::vector<std::string> assumptions;    // each assumption the paper leaves open
   std::vector<Body> bodies;
   std::vector<RevoluteJoint> joints;
   std::vector<ContactPair> contacts;
+  std::vector<ContactGroup> contact_groups;
+  std::vector<GeneratedBodies> generated;
   // engine settings stated by the case ([settings] table), "key" -> TOML text
   // of the value; --set overrides these.
   std::vector<std::pair<std::string, std::string>> settings;
 
   [[nodiscard]] int body_index(const std::string& body_name) const;  // -1 if absent
+  // a case with contact groups: its pairs come from a broad phase (ContactPairs)
+  [[nodiscard]] bool has_contact_groups() const { return !contact_groups.empty(); }
   // the first contact pair with friction > 0, or nullptr (a frictionless case)
   [[nodiscard]] const ContactPair* first_pair_with_friction() const;
   [[nodiscard]] int output_samples() const;  // number of grid points, t = 0 included

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "planarbench/case.hpp"
+#include "planarbench/contact_pairs.hpp"
 #include "planarbench/engine.hpp"
 
 namespace pb {
@@ -126,14 +127,11 @@ class EnergyBudget {
     previous_s_ = 0.0;
     velocity_work_j_ = 0.0;
     start_j_ = kinetic_j(states);
+    const ContactPairs rules(case_);
     for (const ContactSample& s : contacts) {
       if (!std::isfinite(s.penetration_m)) continue;
-      for (const ContactPair& p : case_.contacts) {
-        const bool same = (p.body_a == s.body_a && p.body_b == s.body_b) ||
-                          (p.body_a == s.body_b && p.body_b == s.body_a);
-        if (!same) continue;
-        start_j_ += elastic_energy_j(p.law, s.penetration_m);
-        break;
+      if (const ContactLaw* law = rules.law_between(s.body_a, s.body_b)) {
+        start_j_ += elastic_energy_j(*law, s.penetration_m);
       }
     }
     most_available_j_ = std::max(floor_j_, start_j_);

@@ -17,23 +17,35 @@
 #include <vector>
 
 #include "planarbench/case.hpp"
+#include "planarbench/contact_pairs.hpp"
 #include "planarbench/engine.hpp"
 
 namespace pb {
 
-// "" while every moving body of a pair with a half-plane has its centre of
-// mass on the half-plane's open side (or on its surface); else what is where
-[[nodiscard]] inline std::string body_inside_half_plane(const Case& c,
-                                                        const std::vector<BodyState>& states) {
-  for (const ContactPair& p : c.contacts) {
-    for (const auto& [plane_i, body_i] : {std::pair{p.body_a, p.body_b}, std::pair{p.body_b, p.body_a}}) {
-      const auto pi = static_cast<std::size_t>(plane_i);
-      const auto bi = static_cast<std::size_t>(body_i);
-      if (pi >= c.bodies.size() || bi >= c.bodies.size() || pi >= states.size() ||
-          bi >= states.size()) {
-        continue;
+// The moving bodies of a case that may touch a half-plane (a declared pair
+// or a contact group: in a scene every body of the ground's group, not only
+// the one resting on it) and the check that none is inside it.
+class HalfPlaneGuard {
+ public:
+  explicit HalfPlaneGuard(const Case& c) : case_(&c) {
+    const ContactPairs rules(c);
+    for (std::size_t p = 0; p < c.bodies.size(); ++p) {
+      if (!std::holds_alternative<HalfPlane>(c.bodies[p].shape)) continue;
+      for (std::size_t b = 0; b < c.bodies.size(); ++b) {
+        if (c.bodies[b].fixed) continue;
+        const std::string rule = rules.rule_name(static_cast<int>(p), static_cast<int>(b));
+        if (!rule.empty()) watched_.push_back(Watched{static_cast<int>(p), static_cast<int>(b), rule});
       }
-      if (!std::holds_alternative<HalfPlane>(c.bodies[pi].shape) || c.bodies[bi].fixed) continue;
+    }
+  }
+
+  // "" while every watched body has its centre of mass on the half-plane's
+  // open side (or on its surface); else what is where
+  [[nodiscard]] std::string check(const std::vector<BodyState>& states) const {
+    for (const Watched& w : watched_) {
+      const auto pi = static_cast<std::size_t>(w.plane);
+      const auto bi = static_cast<std::size_t>(w.body);
+      if (pi >= states.size() || bi >= states.size()) continue;
       const BodyState& plane = states[pi];
       // outward normal: +y turned by the half-plane's angle (SPEC §2)
       const Vec2 n(-std::sin(plane.angle_rad), std::cos(plane.angle_rad));
@@ -43,11 +55,20 @@ namespace pb {
             "the centre of mass of body '{}' is {:.6g} m below half-plane '{}' (contact '{}'): "
             "a body cannot be inside one it touches (a blow-up, or the engine's finite ground "
             "left behind)",
-            c.bodies[bi].name, -height, c.bodies[pi].name, p.name);
+            case_->bodies[bi].name, -height, case_->bodies[pi].name, w.rule);
       }
     }
+    return "";
   }
-  return "";
-}
+
+ private:
+  struct Watched {
+    int plane = -1;
+    int body = -1;
+    std::string rule;
+  };
+  const Case* case_;
+  std::vector<Watched> watched_;
+};
 
 }  // namespace pb

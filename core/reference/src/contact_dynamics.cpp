@@ -13,6 +13,7 @@
 #include "planarbench/convex_pieces.hpp"
 #include "planarbench/ellipse_distance.hpp"
 #include "planarbench/reference/unclamped_force.hpp"
+#include "planarbench/contact_pairs.hpp"
 
 namespace pb {
 
@@ -70,31 +71,17 @@ bool friction_on_a_face(const ContactPair& p, const std::vector<Body>& bodies) {
   return false;
 }
 
-bool any_friction(const std::vector<ContactPair>& pairs) {
-  for (const ContactPair& p : pairs) {
-    if (p.has_friction()) return true;
-  }
-  return false;
-}
-
 }  // namespace
 
 ContactDynamics::ContactDynamics(const Case& c, GeometryMode mode, DetectionMode detection)
     : model_(c),
-      pairs_(c.contacts),
+      pairs_(c),
+      declared_(static_cast<int>(c.contacts.size())),
+      near_(c, model_),
+      detection_(detection),
       mode_(mode),
-      has_friction_(any_friction(c.contacts)),
+      has_friction_(case_has_friction(c)),
       stick_(model_.coordinates(), static_cast<int>(c.contacts.size())) {
-  const int nb = static_cast<int>(c.bodies.size());
-  for (const auto& p : pairs_) {
-    if (p.body_a < 0 || p.body_a >= nb || p.body_b < 0 || p.body_b >= nb || p.body_a == p.body_b) {
-      throw std::invalid_argument("contact pair '" + p.name + "' needs two different bodies");
-    }
-    face_.push_back(friction_on_a_face(p, c.bodies));
-    geometry_.push_back(std::make_unique<PairGeometry>(c.bodies[static_cast<std::size_t>(p.body_a)],
-                                                       c.bodies[static_cast<std::size_t>(p.body_b)],
-                                                       mode, detection, face_.back()));
-  }
   bodies_ = c.bodies;
   for (const Body& b : bodies_) {
     reach_m_.push_back(reach_m(b.shape));
@@ -102,15 +89,57 @@ ContactDynamics::ContactDynamics(const Case& c, GeometryMode mode, DetectionMode
                       (!std::holds_alternative<Polygon>(b.shape) ||
                        is_convex_ccw(std::get<Polygon>(b.shape).points_m)));
   }
-  modes_.assign(pairs_.size(), PairMode{});
-  last_.assign(pairs_.size(), PairEvaluation{});
+  add_pair_state();
+  for (int k = 0; k < declared_; ++k) active_.push_back(k);
   q_.setZero(coordinates());
   u_.setZero(coordinates());
   gen_force_.setZero(coordinates());
   u_dot_.setZero(coordinates());
-  stick_rows_.reserve(pairs_.size());
-  stick_pairs_.reserve(pairs_.size());
-  stick_force_n_.reserve(pairs_.size());
+  stick_rows_.reserve(pairs_.all().size());
+  stick_pairs_.reserve(pairs_.all().size());
+  stick_force_n_.reserve(pairs_.all().size());
+}
+
+void ContactDynamics::add_pair_state() {
+  const int nb = static_cast<int>(bodies_.size());
+  for (auto k = static_cast<int>(geometry_.size()); k < pair_count(); ++k) {
+    const ContactPair& p = pairs_[k];
+    if (p.body_a < 0 || p.body_a >= nb || p.body_b < 0 || p.body_b >= nb || p.body_a == p.body_b) {
+      throw std::invalid_argument("contact pair '" + p.name + "' needs two different bodies");
+    }
+    face_.push_back(friction_on_a_face(p, bodies_));
+    geometry_.push_back(std::make_unique<PairGeometry>(bodies_[static_cast<std::size_t>(p.body_a)],
+                                                       bodies_[static_cast<std::size_t>(p.body_b)],
+                                                       mode_, detection_, face_.back()));
+    modes_.emplace_back();
+    last_.emplace_back();
+  }
+}
+
+bool ContactDynamics::update_near(const Eigen::VectorXd& y) {
+  if (near_.empty()) return false;
+  if (!near_.update(y.head(coordinates()), pairs_, near_scratch_)) return false;
+  add_pair_state();
+  // every declared pair, the near group pairs, and any group pair still in
+  // contact (none, by the margins: kept so that no phase is left behind)
+  std::vector<int> next;
+  next.reserve(static_cast<std::size_t>(declared_) + near_scratch_.size());
+  for (int k = 0; k < declared_; ++k) next.push_back(k);
+  std::size_t n = 0;
+  for (const int k : active_) {
+    if (k < declared_ || modes_[static_cast<std::size_t>(k)].phase == ContactPhase::apart) continue;
+    while (n < near_scratch_.size() && near_scratch_[n] < k) next.push_back(near_scratch_[n++]);
+    if (n < near_scratch_.size() && near_scratch_[n] == k) ++n;
+    next.push_back(k);
+  }
+  while (n < near_scratch_.size()) next.push_back(near_scratch_[n++]);
+  const bool changed = next != active_;
+  active_ = std::move(next);
+  return changed;
+}
+
+double ContactDynamics::near_excursion(const Eigen::VectorXd& y) const {
+  return near_.empty() ? 0.0 : near_.excursion(y.head(coordinates()));
 }
 
 void ContactDynamics::initial_state(Eigen::VectorXd& y) const {
@@ -123,7 +152,7 @@ void ContactDynamics::initial_state(Eigen::VectorXd& y) const {
 }
 
 PairEvaluation ContactDynamics::evaluate(int k, const PairMode& mode) {
-  const ContactPair& p = pairs_[static_cast<std::size_t>(k)];
+  const ContactPair& p = pairs_[k];
   PairEvaluation e;
   e.geometry = geometry_[static_cast<std::size_t>(k)]->evaluate(model_.pose(p.body_a, q_),
                                                                 model_.pose(p.body_b, q_));
@@ -145,7 +174,7 @@ void ContactDynamics::add_damping_couple(int k, const PairEvaluation& e) {
   // at their centroid, the couple -B spread (omega_b - omega_a) of the rates
   // that a rotation about the centroid gives the points (coulomb_friction.hpp)
   if (!(e.geometry.spread_m2 > 0.0)) return;
-  const ContactPair& p = pairs_[static_cast<std::size_t>(k)];
+  const ContactPair& p = pairs_[k];
   const double b = law_damping_ns_per_m(p.law, -e.geometry.gap_m,
                                         modes_[static_cast<std::size_t>(k)].approach_speed_mps);
   const double omega = model_.angular_velocity(p.body_b, u_) - model_.angular_velocity(p.body_a, u_);
@@ -158,9 +187,9 @@ void ContactDynamics::add_friction() {
   // slip: -mu F s, on b at p_b along t and the opposite on a at p_a
   stick_rows_.clear();
   stick_pairs_.clear();
-  for (int k = 0; k < pair_count(); ++k) {
+  for (const int k : active_) {
     const auto ku = static_cast<std::size_t>(k);
-    const ContactPair& p = pairs_[ku];
+    const ContactPair& p = pairs_[k];
     PairEvaluation& e = last_[ku];
     e.friction_n = 0.0;
     const PairMode& m = modes_[ku];
@@ -179,7 +208,11 @@ void ContactDynamics::add_friction() {
   if (stick_rows_.empty()) return;
   // stick: the forces that hold the sticking pairs, given everything else
   u_dot_ = gen_force_.cwiseQuotient(model_.mass_diagonal());
-  stick_.solve(model_, q_, u_, u_dot_, stick_rows_, stick_force_n_);
+  if (has_groups()) {
+    sparse_stick_.solve(model_, q_, u_, u_dot_, stick_rows_, stick_force_n_);
+  } else {
+    stick_.solve(model_, q_, u_, u_dot_, stick_rows_, stick_force_n_);
+  }
   for (std::size_t j = 0; j < stick_rows_.size(); ++j) {
     const StickRow& r = stick_rows_[j];
     last_[static_cast<std::size_t>(stick_pairs_[j])].friction_n = stick_force_n_[j];
@@ -196,7 +229,7 @@ void ContactDynamics::choose_slip_phase(int k, const Eigen::VectorXd& y) {
   Eigen::VectorXd f(state_size());  // at events only, not per step
   derivative(y, f);
   const PairEvaluation& e = last_[ku];
-  const double mu_f = pairs_[ku].friction * e.force_n;
+  const double mu_f = pairs_[k].friction * e.force_n;
   if (std::abs(e.slip_rate_mps) <= kStickSpeed_mps && std::abs(e.friction_n) <= mu_f) return;
   // slip: along the tangential speed, or, from rest, the way the load drives
   // it (against the force that would have held it)
@@ -215,13 +248,15 @@ void ContactDynamics::derivative(const Eigen::VectorXd& y, Eigen::VectorXd& dy) 
   u_ = y.segment(n, n);
   model_.gravity_forces(q_, gen_force_);
   dy.resize(state_size());
-  for (int k = 0; k < pair_count(); ++k) {
+  // the slots of the group pairs not evaluated stay constant
+  if (has_groups()) dy.tail(state_size() - 2 * n - slots() * declared_).setZero();
+  for (const int k : active_) {
     const PairEvaluation e = evaluate(k, modes_[static_cast<std::size_t>(k)]);
     last_[static_cast<std::size_t>(k)] = e;
     dy[impulse_index(k)] = e.force_n;
     if (e.force_n == 0.0) continue;
     // F n on b at p_b, -F n on a at p_a
-    const ContactPair& p = pairs_[static_cast<std::size_t>(k)];
+    const ContactPair& p = pairs_[k];
     const Vec2 f = e.force_n * e.geometry.normal;
     model_.add_point_force(p.body_b, q_, e.geometry.point_b_m, f, gen_force_);
     model_.add_point_force(p.body_a, q_, e.geometry.point_a_m, -f, gen_force_);
@@ -229,7 +264,7 @@ void ContactDynamics::derivative(const Eigen::VectorXd& y, Eigen::VectorXd& dy) 
   }
   if (has_friction_) {
     add_friction();
-    for (int k = 0; k < pair_count(); ++k) {
+    for (const int k : active_) {
       const PairEvaluation& e = last_[static_cast<std::size_t>(k)];
       dy[tangential_impulse_index(k)] = e.friction_n;
       dy[dissipation_index(k)] = -e.friction_n * e.slip_rate_mps;
@@ -276,7 +311,8 @@ double ContactDynamics::joint_violation_m(const Eigen::VectorXd& y) const {
 
 std::string ContactDynamics::beyond_geometry(const Eigen::VectorXd& y) const {
   const auto q = y.head(coordinates());
-  for (const ContactPair& p : pairs_) {
+  for (const int k : active_) {
+    const ContactPair& p = pairs_[k];
     for (const auto& [self, other] : {std::pair{p.body_a, p.body_b}, std::pair{p.body_b, p.body_a}}) {
       const auto si = static_cast<std::size_t>(self);
       const auto oi = static_cast<std::size_t>(other);

@@ -7,6 +7,7 @@
 #include <string>
 #include <variant>
 
+#include "planarbench/convex_pieces.hpp"
 #include "planarbench/ellipse_distance.hpp"
 
 namespace pb {
@@ -21,12 +22,17 @@ int rank(const Shape& s) {
   return 3;  // circle
 }
 
+bool convex_polygon(const Shape& s) {
+  const auto* p = std::get_if<Polygon>(&s);
+  return p != nullptr && is_convex_ccw(p->points_m);
+}
+
 bool canonical_pair_supported(const Shape& first, const Shape& second) {
   const int r1 = rank(first);
   const int r2 = rank(second);
   if (r2 == 3) return true;              // anything - circle
   if (r1 == 0) return r2 == 1 || r2 == 2;  // half-plane - polygon, ellipse
-  return false;
+  return r1 == 1 && r2 == 1 && convex_polygon(first) && convex_polygon(second);
 }
 
 // the half-plane's surface: a point on it and its outward normal
@@ -132,6 +138,170 @@ ContactGeometry polygon_circle(const WorldOutline& poly, const Pose& body, doubl
   return g;
 }
 
+// world vertices of a convex polygon at a pose
+void place_vertices(const std::vector<Vec2>& local, const Pose& pose, std::vector<Vec2>& out) {
+  out.resize(local.size());
+  const Eigen::Matrix2d r = pose.rotation();
+  for (std::size_t i = 0; i < local.size(); ++i) out[i] = pose.position_m + r * local[i];
+}
+
+// the outward unit normal of edge i (counter-clockwise vertices)
+Vec2 edge_normal(const std::vector<Vec2>& v, std::size_t i) {
+  const Vec2 e = v[(i + 1) % v.size()] - v[i];
+  return Vec2(e.y(), -e.x()).normalized();
+}
+
+// the face of `ref` along which `other` is least deep: max over faces of the
+// least height of other's vertices above it (the separating axis test)
+double max_separation(const std::vector<Vec2>& ref, const std::vector<Vec2>& other, std::size_t& face) {
+  double best = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < ref.size(); ++i) {
+    const Vec2 n = edge_normal(ref, i);
+    double least = std::numeric_limits<double>::infinity();
+    for (const Vec2& w : other) least = std::min(least, n.dot(w - ref[i]));
+    if (least > best) {
+      best = least;
+      face = i;
+    }
+  }
+  return best;
+}
+
+// m, the distance between two disjoint convex polygons and its closest points
+double polygon_distance(const std::vector<Vec2>& a, const std::vector<Vec2>& b, Vec2& pa, Vec2& pb) {
+  double best = std::numeric_limits<double>::infinity();
+  auto try_side = [&](const std::vector<Vec2>& pts, const std::vector<Vec2>& poly, bool pts_are_a) {
+    for (const Vec2& p : pts) {
+      for (std::size_t i = 0; i < poly.size(); ++i) {
+        const Vec2& q0 = poly[i];
+        const Vec2 e = poly[(i + 1) % poly.size()] - q0;
+        const double t = std::clamp((p - q0).dot(e) / e.squaredNorm(), 0.0, 1.0);
+        const Vec2 q = q0 + t * e;
+        const double d = (p - q).norm();
+        if (d < best) {
+          best = d;
+          pa = pts_are_a ? p : q;
+          pb = pts_are_a ? q : p;
+        }
+      }
+    }
+  };
+  try_side(a, b, true);
+  try_side(b, a, false);
+  return best;
+}
+
+// Two convex polygons (SPEC §1: one force per pair). Apart: their distance.
+// Overlapping: the separating axis test gives the penetration delta, the
+// least overlap along a face normal (the minimum translation), and that face
+// (the reference face) the normal; the other polygon's face most against it
+// (the incident face), clipped to the reference face's extent, gives the
+// points pressed below it, and the force acts at their depth-weighted
+// centroid: a face flat on a face, however much of it overlaps, is one
+// contact at the middle of the overlap (Catto, "Contact manifolds", GDC
+// 2007, and Box2D's b2CollidePolygons for the clipping; the centroid as the
+// half-plane's rule above). A body's vertex exactly on the other's side line
+// (two equal boxes stacked) counts at its depth below the reference face,
+// which the outline's nearest-boundary depth puts at 0.
+ContactGeometry polygon_polygon(const std::vector<Vec2>& la, const Pose& pose_a,
+                                const std::vector<Vec2>& lb, const Pose& pose_b,
+                                std::vector<Vec2>& a, std::vector<Vec2>& b) {
+  place_vertices(la, pose_a, a);
+  place_vertices(lb, pose_b, b);
+  std::size_t face_a = 0, face_b = 0;
+  const double sep_a = max_separation(a, b, face_a);
+  const double sep_b = max_separation(b, a, face_b);
+  ContactGeometry g;
+  if (sep_a > 0.0 || sep_b > 0.0) {
+    g.gap_m = polygon_distance(a, b, g.point_a_m, g.point_b_m);
+    const Vec2 d = g.point_b_m - g.point_a_m;
+    // touching within rounding: the separating face's normal
+    g.normal = d.norm() > 1e-12 * (1.0 + g.point_a_m.norm())
+                   ? Vec2(d.normalized())
+                   : (sep_a >= sep_b ? edge_normal(a, face_a) : Vec2(-edge_normal(b, face_b)));
+    return g;
+  }
+  // the reference face: a's unless b's separation is clearly the larger (a
+  // tie, two faces flat on each other, keeps a's: no flip with rounding)
+  const double scale = 1.0 + std::max(pose_a.position_m.norm(), pose_b.position_m.norm());
+  const bool ref_is_a = !(sep_b > sep_a + 1e-12 * scale);
+  const std::vector<Vec2>& ref = ref_is_a ? a : b;
+  const std::vector<Vec2>& inc = ref_is_a ? b : a;
+  const std::size_t rf = ref_is_a ? face_a : face_b;
+  const Vec2 nr = edge_normal(ref, rf);  // outward of the reference body
+  const Vec2 r0 = ref[rf];
+  const Vec2 r1 = ref[(rf + 1) % ref.size()];
+  const Vec2 tangent = (r1 - r0).normalized();
+  // the incident face: its outward normal most against nr
+  std::size_t inc_face = 0;
+  double most = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < inc.size(); ++i) {
+    const double c = edge_normal(inc, i).dot(nr);
+    if (c < most) {
+      most = c;
+      inc_face = i;
+    }
+  }
+  Vec2 p0 = inc[inc_face];
+  Vec2 p1 = inc[(inc_face + 1) % inc.size()];
+  // clipped to the reference face's extent along its tangent
+  const double lo = tangent.dot(r0);
+  const double hi = tangent.dot(r1);
+  auto clip = [&](double bound, double sign) {
+    const double d0 = sign * (tangent.dot(p0) - bound);
+    const double d1 = sign * (tangent.dot(p1) - bound);
+    if (d0 < 0.0 && d1 < 0.0) return false;
+    if (d0 < 0.0) p0 = p0 + (p1 - p0) * (d0 / (d0 - d1));
+    if (d1 < 0.0) p1 = p1 + (p0 - p1) * (d1 / (d1 - d0));
+    return true;
+  };
+  const double delta = -std::max(sep_a, sep_b);
+  // the points pressed below the reference face, by depth
+  double w_sum = 0.0;
+  Vec2 p_sum = Vec2::Zero();
+  double s_sum = 0.0, ss_sum = 0.0;
+  if (clip(lo, 1.0) && clip(hi, -1.0)) {
+    for (const Vec2& p : {p0, p1}) {
+      const double depth = -nr.dot(p - r0);
+      if (!(depth > 0.0)) continue;
+      w_sum += depth;
+      p_sum += depth * p;
+      const double s = tangent.dot(p);
+      s_sum += depth * s;
+      ss_sum += depth * s * s;
+    }
+  }
+  Vec2 point = inc[inc_face];  // on the incident body
+  if (w_sum > 0.0) {
+    point = p_sum / w_sum;
+    const double mean = s_sum / w_sum;
+    g.spread_m2 = std::max(0.0, ss_sum / w_sum - mean * mean);
+  } else {
+    // no point of the incident face below the reference face within its
+    // extent (corner against corner): the incident body's deepest vertex
+    double deepest = -std::numeric_limits<double>::infinity();
+    for (const Vec2& v : inc) {
+      const double depth = -nr.dot(v - r0);
+      if (depth > deepest) {
+        deepest = depth;
+        point = v;
+      }
+    }
+  }
+  g.gap_m = -delta;
+  if (ref_is_a) {
+    // b's points are inside a, delta below a's face along -n
+    g.normal = nr;
+    g.point_b_m = point;
+    g.point_a_m = point + delta * g.normal;
+  } else {
+    g.normal = -nr;
+    g.point_a_m = point;
+    g.point_b_m = point - delta * g.normal;
+  }
+  return g;
+}
+
 ContactGeometry ellipse_circle(const Ellipse& e, const Pose& body, double radius,
                                const Pose& disk) {
   const Vec2 c = disk.position_m;
@@ -175,6 +345,10 @@ ExactContact::ExactContact(const Shape& a, const Shape& b) {
   for (const Shape* s : {&first_, &second_}) {
     if (const auto* p = std::get_if<Polygon>(s)) place_outline(p->points_m, Pose{}, polygon_);
   }
+  if (std::holds_alternative<Polygon>(first_) && std::holds_alternative<Polygon>(second_)) {
+    local_first_ = std::get<Polygon>(first_).points_m;
+    local_second_ = std::get<Polygon>(second_).points_m;
+  }
 }
 
 ContactGeometry ExactContact::evaluate(const Pose& pose_a, const Pose& pose_b) const {
@@ -193,6 +367,8 @@ ContactGeometry ExactContact::evaluate(const Pose& pose_a, const Pose& pose_b) c
     }
   } else if (const auto* e2 = std::get_if<Ellipse>(&second_)) {
     g = halfplane_ellipse(p1, *e2, p2);
+  } else if (!local_first_.empty()) {
+    g = polygon_polygon(local_first_, p1, local_second_, p2, world_first_, world_second_);
   } else {
     g = halfplane_polygon(p1, polygon_, p2);
   }

@@ -642,7 +642,6 @@ ContactGeometry FastOutlineContactSearch::evaluate(const Pose& pose_a, const Pos
   const bool a_deepest = depth_a >= depth_b;
   ContactGeometry g = a_deepest ? geometry_of(a_, deepest_a, b_, true, true)
                                 : geometry_of(b_, deepest_b, a_, false, true);
-  const double delta = -g.gap_m;
   // line of action through the depth-weighted centroid of the inside points
   // of the body that has more of them (every one was walked by classify)
   auto run_of = [&](Body& body, int start) {
@@ -672,15 +671,7 @@ ContactGeometry FastOutlineContactSearch::evaluate(const Pose& pose_a, const Pos
   };
   const internal::Run run_a = run_of(a_, deepest_a);
   const internal::Run run_b = run_of(b_, deepest_b);
-  const bool use_a = internal::action_points_of_a(run_a, run_b, a_deepest, action_points_);
-  if (use_a) {
-    g.point_a_m = run_a.centroid_m;
-    g.point_b_m = g.point_a_m - delta * g.normal;
-  } else {
-    g.point_b_m = run_b.centroid_m;
-    g.point_a_m = g.point_b_m + delta * g.normal;
-  }
-  g.spread_m2 = internal::spread_along(use_a ? run_a : run_b, Vec2(g.normal.y(), -g.normal.x()));
+  internal::place_line_of_action(g, run_a, run_b, a_deepest, action_points_);
   return g;
 }
 

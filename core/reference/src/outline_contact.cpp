@@ -207,20 +207,11 @@ ContactGeometry OutlineContactSearch::evaluate_placed(const WorldOutline& a,
   // overlapping: delta and normal of the deepest point overall
   const bool a_deepest = deepest_a.hit.distance_m >= deepest_b.hit.distance_m;
   ContactGeometry g = candidate_geometry(a_deepest ? deepest_a : deepest_b, a, b, true);
-  const double delta = -g.gap_m;
   // line of action through the depth-weighted centroid of the inside points
   // of the body that has more of them
   const internal::Run run_a = all_inside(a, hits_a_, deepest_a.vertex, inside_ids_);
   const internal::Run run_b = all_inside(b, hits_b_, deepest_b.vertex, inside_ids_);
-  const bool use_a = internal::action_points_of_a(run_a, run_b, a_deepest, action_points_);
-  if (use_a) {
-    g.point_a_m = run_a.centroid_m;
-    g.point_b_m = g.point_a_m - delta * g.normal;
-  } else {
-    g.point_b_m = run_b.centroid_m;
-    g.point_a_m = g.point_b_m + delta * g.normal;
-  }
-  g.spread_m2 = internal::spread_along(use_a ? run_a : run_b, Vec2(g.normal.y(), -g.normal.x()));
+  internal::place_line_of_action(g, run_a, run_b, a_deepest, action_points_);
   return g;
 }
 

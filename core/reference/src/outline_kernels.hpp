@@ -224,10 +224,12 @@ template <class Inside, class Depth, class Point>
   return r;
 }
 
-// whose inside points place the line of action: a's (true) or b's (false)
+// whose inside points place the line of action: a's (true) or b's (false);
+// not asked for ActionPoints::both (place_line_of_action)
 [[nodiscard]] inline bool action_points_of_a(const Run& a, const Run& b, bool a_deepest,
                                              ActionPoints rule) {
   switch (rule) {
+    case ActionPoints::both: break;
     case ActionPoints::a: return a.first >= 0 || b.first < 0;
     case ActionPoints::b: return !(b.first >= 0 || a.first < 0);
     case ActionPoints::vertex_a:
@@ -265,6 +267,48 @@ void add_other_inside(Run& r, int n, const Indices& inside_ascending, Depth&& de
     added = true;
   }
   if (added && r.w_sum > 0.0) r.centroid_m = r.p_sum / r.w_sum;
+}
+
+// The line of action of an overlap whose deepest point gave g (gap, normal,
+// the deepest point and its boundary point): through the depth-weighted
+// centroid of the inside points that `rule` names (action_points_of_a), or,
+// for ActionPoints::both, of every inside point of both bodies. b's inside
+// points lie on a's side of the overlap, a's on b's side, delta apart along
+// the normal; b's are moved by delta n onto a's side so that the centroid
+// is of points of one side. Each point weighs its depth, which is 0 where it
+// enters or leaves the other body, so that centroid moves continuously as
+// points come and go, where the side with more points jumps when the counts
+// change (two sampled curves pressed lightly: the force's lever flips by an
+// edge length, and the rotation it drives flips it back: a sliding mode the
+// integrator can only follow with vanishing steps; reference README, Scenes).
+// The spread is along the tangent, which the move along the normal keeps.
+inline void place_line_of_action(ContactGeometry& g, const Run& run_a, const Run& run_b,
+                                 bool a_deepest, ActionPoints rule) {
+  const double delta = -g.gap_m;
+  const Vec2 tangent(g.normal.y(), -g.normal.x());
+  if (rule == ActionPoints::both && run_a.points > 0 && run_b.points > 0 &&
+      run_a.w_sum + run_b.w_sum > 0.0) {
+    const double w = run_a.w_sum + run_b.w_sum;
+    g.point_a_m = (run_a.p_sum + run_b.p_sum + run_b.w_sum * delta * g.normal) / w;
+    g.point_b_m = g.point_a_m - delta * g.normal;
+    Run both;
+    both.points = run_a.points + run_b.points;
+    both.w_sum = w;
+    both.centroid_m = (run_a.p_sum + run_b.p_sum) / w;
+    both.pp_sum = run_a.pp_sum + run_b.pp_sum;
+    g.spread_m2 = spread_along(both, tangent);
+    return;
+  }
+  const bool use_a = rule == ActionPoints::both ? run_a.points > 0
+                                                 : action_points_of_a(run_a, run_b, a_deepest, rule);
+  if (use_a) {
+    g.point_a_m = run_a.centroid_m;
+    g.point_b_m = g.point_a_m - delta * g.normal;
+  } else {
+    g.point_b_m = run_b.centroid_m;
+    g.point_a_m = g.point_b_m + delta * g.normal;
+  }
+  g.spread_m2 = spread_along(use_a ? run_a : run_b, tangent);
 }
 
 }  // namespace pb::internal

@@ -164,6 +164,26 @@ void PlanarModel::add_point_force(int body, ConstVectorRef q, const Vec2& p_m,
   }
 }
 
+int PlanarModel::point_force_entries(int body, ConstVectorRef q, const Vec2& p_m, const Vec2& f_n,
+                                     int index[3], double value[3]) const {
+  const ModelBody& b = bodies_[static_cast<std::size_t>(body)];
+  if (b.kind == Kind::pendulum) {
+    index[0] = b.coord;
+    value[0] = cross2(p_m - b.anchor_world_m, f_n);
+    return 1;
+  }
+  if (b.kind == Kind::free) {
+    index[0] = b.coord;
+    index[1] = b.coord + 1;
+    index[2] = b.coord + 2;
+    value[0] = f_n.x();
+    value[1] = f_n.y();
+    value[2] = cross2(p_m - q.segment<2>(b.coord), f_n);
+    return 3;
+  }
+  return 0;
+}
+
 void PlanarModel::add_couple(int body, double torque_nm, Eigen::VectorXd& gen_force) const {
   const ModelBody& b = bodies_[static_cast<std::size_t>(body)];
   if (b.kind == Kind::pendulum) gen_force[b.coord] += torque_nm;

@@ -2,6 +2,8 @@
 // planarbench engine interface. The work is in reference_solver.hpp.
 #include "planarbench/reference/reference_engine.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include <nlohmann/json.hpp>
@@ -48,6 +50,29 @@ class ReferenceEngine final : public Engine {
         return Capability{Support::unsupported, "pair '" + p.name + "': " + reason};
       }
     }
+    // a group's pairs: one body of each kind of shape stands for the others
+    for (const ContactGroup& g : c.contact_groups) {
+      std::vector<int> kinds;
+      for (const int i : g.bodies) {
+        const Body& b = c.bodies[static_cast<std::size_t>(i)];
+        const bool seen = std::any_of(kinds.begin(), kinds.end(), [&](int j) {
+          const Body& o = c.bodies[static_cast<std::size_t>(j)];
+          return o.shape.index() == b.shape.index() && o.fixed == b.fixed;
+        });
+        if (!seen) kinds.push_back(i);
+      }
+      for (std::size_t x = 0; x < kinds.size(); ++x) {
+        for (std::size_t y = x + 1; y < kinds.size(); ++y) {
+          const Body& a = c.bodies[static_cast<std::size_t>(kinds[x])];
+          const Body& b = c.bodies[static_cast<std::size_t>(kinds[y])];
+          if (a.fixed && b.fixed) continue;
+          std::string reason;
+          if (!PairGeometry::supported(a, b, mode, &reason)) {
+            return Capability{Support::unsupported, "contact group '" + g.name + "': " + reason};
+          }
+        }
+      }
+    }
     return Capability{Support::native, ""};
   }
 
@@ -65,6 +90,11 @@ class ReferenceEngine final : public Engine {
       pair_names_.push_back(p.name);
       if (p.has_friction()) friction_[p.name] = p.friction;
     }
+    for (const auto& g : c.contact_groups) {
+      pair_laws_[g.name] = contact_law_name(g.law);
+      if (g.has_friction()) friction_[g.name] = g.friction;
+    }
+    has_groups_ = c.has_contact_groups();
     outline_points_ = nlohmann::json::object();
     for (const auto& b : c.bodies) outline_points_[b.name] = b.outline_points;
     try {
@@ -108,8 +138,17 @@ class ReferenceEngine final : public Engine {
               "trees, the same result); half-plane = its surface segment of outline_points points";
     m["outline_points"] = outline_points_;
     m["contact_model"] =
-        "one contact per pair at the deepest point; with several overlap regions only the "
-        "deepest carries force; the force acts at the contact points (torques included)";
+        "one contact per pair: the penetration and normal of the deepest point, the line of "
+        "action through the depth-weighted centroid of the inside points of every overlap region "
+        "(of both bodies for two polygons, whose faces are sampled at 180 points); the force acts "
+        "at the contact points (torques included)";
+    if (has_groups_) {
+      m["contact_groups"] =
+          "every pair of a group may touch: a Verlet list over bounding boxes fattened by a "
+          "quarter of each body's reach (sort and sweep), rebuilt when a body has moved half its "
+          "margin, a trial step moving one past its margin taken shorter (near_pairs.hpp); only "
+          "the near pairs run the narrow phase; sticking pairs solved together sparsely";
+    }
     m["joints"] = "joint coordinates: revolute joints to ground hold by construction";
     if (!friction_.empty()) {
       m["friction"] = {
@@ -158,6 +197,7 @@ class ReferenceEngine final : public Engine {
     x["rhs_evaluations"] = s.rhs_evaluations;
     x["rejected_steps"] = s.rejected;
     x["events_located"] = s.events;
+    if (has_groups_) x["broad_phase_rebuilds"] = solver_->near_rebuilds();
     if (!friction_.empty()) {
       x["friction_dissipation_j"] = solver_->friction_dissipation_j();
       nlohmann::json jt = nlohmann::json::object();
@@ -184,7 +224,8 @@ class ReferenceEngine final : public Engine {
   int bodies_ = 0;
   nlohmann::json pair_laws_ = nlohmann::json::object();
   nlohmann::json friction_ = nlohmann::json::object();  // pair name -> coefficient
-  std::vector<std::string> pair_names_;
+  std::vector<std::string> pair_names_;  // declared pairs
+  bool has_groups_ = false;
   nlohmann::json outline_points_ = nlohmann::json::object();
 };
 

@@ -42,6 +42,15 @@ constexpr int kMaxStalledSteps = 100;
 constexpr int kGoldenIterations = 40;
 // refine only local maxima within 2 % of the episode's running peak
 constexpr double kPeakWindow = 0.98;
+// A pair's phase changes at most twice at one instant (apart -> touching ->
+// pressing, a contact that starts pressed in): each change is due on the
+// pair's own geometry and law, which the change of phase leaves as they were
+// (the next is the other way only if its condition is the opposite's, which
+// the strict inequalities exclude). Four leaves room and names the pair.
+constexpr int kMaxSettleChanges = 4;
+// zero-length events of one pair in a row (its event function exactly 0 at
+// a step's start, again and again: the pair chatters)
+constexpr int kMaxZeroLengthEvents = 8;
 
 IntegratorKind parse_integrator(const std::string& s) {
   if (s == "rk45") return IntegratorKind::rk45;
@@ -108,8 +117,13 @@ ReferenceSolver::ReferenceSolver(const Case& c, const ReferenceSettings& s)
       duration_s_(c.duration_s),
       dp_(sys_.state_size()),
       rk4_(sys_.state_size()) {
-  const int n = sys_.state_size();
   sys_.initial_state(y_);
+  // a scene's group pairs near at t = 0 get their slots before the first step
+  const Eigen::Index declared_size = y_.size();
+  sys_.update_near(y_);
+  const int n = sys_.state_size();
+  y_.conservativeResize(n);
+  y_.tail(n - declared_size).setZero();
   f_.setZero(n);
   y1_.setZero(n);
   f1_.setZero(n);
@@ -163,7 +177,8 @@ bool ReferenceSolver::event_exits(EventKind kind, int k, const PairEvaluation& e
 std::optional<ReferenceSolver::Event> ReferenceSolver::first_event(double h) {
   // phase changes due between the step start (pairs_) and its end (pairs1_)
   candidates_.clear();
-  for (int k = 0; k < sys_.pair_count(); ++k) {
+  for (const int k : sys_.active()) {
+    if (!grazing_.empty() && std::find(grazing_.begin(), grazing_.end(), k) != grazing_.end()) continue;
     const auto ku = static_cast<std::size_t>(k);
     const PairEvaluation& e0 = pairs_[ku];
     const PairEvaluation& e1 = pairs1_[ku];
@@ -187,6 +202,17 @@ std::optional<ReferenceSolver::Event> ReferenceSolver::first_event(double h) {
     }
     for (int i = 0; i < nk; ++i) {
       const EventKind kind = kinds[i];
+      // A pair slipping against its latched direction faster than the stick
+      // speed is due now: its slip began from rest the way the load drove it
+      // and the motion went the other way, as when two pairs of a body broke
+      // their stick together (a pyramid's top brick, issue 44: both slipped,
+      // one pushing along its slip, and the brick walked 3.5 cm in 2 s). Its
+      // event function was past its bound at the step's start, so no crossing
+      // would ever be located.
+      if (kind == EventKind::slip_ends && event_value(kind, k, e0) < -kStickSpeed_mps) {
+        candidates_.push_back(Candidate{k, kind, 0.0, event_value(kind, k, e1)});
+        continue;
+      }
       if (!event_exits(kind, k, e1) || event_exits(kind, k, e0)) continue;
       // re-pressing after a clamp only matters while still penetrating
       if (kind == EventKind::unclamp && !(e1.geometry.gap_m < 0.0)) continue;
@@ -196,9 +222,46 @@ std::optional<ReferenceSolver::Event> ReferenceSolver::first_event(double h) {
   }
   if (candidates_.empty()) return std::nullopt;
 
-  // locate each; the earliest wins
+  // The earliest wins. Each candidate is located over the whole step [0, h],
+  // and in the order of its secant estimate; once one is located at tau*, a
+  // candidate whose event has not happened by tau* (the trial re-taken to
+  // tau*) happens later and is not located: a scene's step with dozens of
+  // candidates locates about one, where each location is up to 200 trials of
+  // every pair (before: all of them). Ties keep the first in pair order.
+  order_.resize(candidates_.size());
+  for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = i;
+  auto estimate = [&](const Candidate& c) { return c.g0 == 0.0 ? 0.0 : c.g0 / (c.g0 - c.g1); };
+  if (candidates_.size() > 1) {
+    std::stable_sort(order_.begin(), order_.end(), [&](std::size_t x, std::size_t y) {
+      return estimate(candidates_[x]) < estimate(candidates_[y]);
+    });
+  }
   std::optional<Event> best;
-  for (const Candidate& c : candidates_) {
+  std::size_t best_index = 0;
+  double checked_at = -1.0;  // s, the tau the trial state now holds (-1: none)
+  // A scene's event is found first on the step's dense output, the pair's own
+  // geometry at interpolated poses (no derivative of every pair), then the
+  // trial is taken to that time once: the event has happened there, or it is
+  // located on trials from there to the step's end (a few). Each of a pile's
+  // thousands of events cost ~40 trials of every pair before. The shipped
+  // cases (no groups) locate on trials alone, as always: their bits.
+  const bool dense_first = sys_.has_groups();
+  if (dense_first && !candidates_.empty()) {
+    if (kind_ == IntegratorKind::rk45) {
+      dp_.dense(t_, h, y_, y1_, f_, f1_, trial_dense_);
+    } else {
+      trial_dense_.set_hermite(t_, h, y_, y1_, f_, f1_);
+    }
+  }
+  for (const std::size_t i : order_) {
+    const Candidate& c = candidates_[i];
+    if (best) {
+      if (checked_at != best->tau) {
+        trial(best->tau);
+        checked_at = best->tau;
+      }
+      if (!event_exits(c.kind, c.pair, pairs1_[static_cast<std::size_t>(c.pair)])) continue;
+    }
     double tau = 0.0;  // a value exactly 0 at the start: the change is due now
     if (c.g0 != 0.0) {
       // bracket [0, h]; probe = the step re-taken with length tau
@@ -209,12 +272,53 @@ std::optional<ReferenceSolver::Event> ReferenceSolver::first_event(double h) {
                                        event_exits(c.kind, c.pair, e));
       };
       const double tol = 4.0 * kEps * (std::abs(t_) + h);
-      tau = locate_event(probe, 0.0, c.g0, h, c.g1, tol, root_method_).hi;
+      // slip and stick need the friction of every pair: trials only
+      const bool on_dense = dense_first && c.kind != EventKind::slip_ends &&
+                            c.kind != EventKind::stick_breaks;
+      if (on_dense) {
+        auto dense_probe = [&](double x) {
+          trial_dense_.evaluate(t_ + x, y_tmp_);
+          const PairEvaluation e = sys_.evaluate_pair(c.pair, y_tmp_, sys_.modes()[static_cast<std::size_t>(c.pair)]);
+          return std::pair<double, bool>(event_value(c.kind, c.pair, e),
+                                         event_exits(c.kind, c.pair, e));
+        };
+        const double tau_d = locate_event(dense_probe, 0.0, c.g0, h, c.g1, tol, root_method_).hi;
+        // then on the trials, in a bracket the dense estimate narrowed: from
+        // tau_d on if it has not happened there, else back from tau_d in
+        // widening strides (the interpolant's error is a tiny part of h)
+        const auto [g_d, exits_d] = probe(tau_d);
+        double lo = 0.0, g_lo = c.g0, hi = h, g_hi = c.g1;
+        if (!exits_d) {
+          lo = tau_d;
+          g_lo = g_d;
+        } else {
+          hi = tau_d;
+          g_hi = g_d;
+          for (double w = std::max(tol, 1e-3 * tau_d); tau_d - w > 0.0; w *= 16.0) {
+            const auto [g_x, exits_x] = probe(tau_d - w);
+            if (!exits_x) {
+              lo = tau_d - w;
+              g_lo = g_x;
+              break;
+            }
+            hi = tau_d - w;
+            g_hi = g_x;
+          }
+        }
+        tau = locate_event(probe, lo, g_lo, hi, g_hi, tol, root_method_).hi;
+        checked_at = -1.0;
+      } else {
+        tau = locate_event(probe, 0.0, c.g0, h, c.g1, tol, root_method_).hi;
+        checked_at = -1.0;
+      }
     }
-    if (!best || tau < best->tau) best = Event{c.pair, c.kind, tau};
+    if (!best || tau < best->tau || (tau == best->tau && i < best_index)) {
+      best = Event{c.pair, c.kind, tau};
+      best_index = i;
+    }
   }
   // the state at the chosen event (the probes moved the trial)
-  if (best->tau > 0.0) trial(best->tau);
+  if (best->tau > 0.0 && checked_at != best->tau) trial(best->tau);
   return best;
 }
 
@@ -268,42 +372,80 @@ void ReferenceSolver::apply(const Event& ev) {
   ++stats_.events;
 }
 
+std::optional<ReferenceSolver::Event> ReferenceSolver::due_now(int k, const PairEvaluation& e) const {
+  const double s = e.geometry.gap_m;
+  const double thr = sys_.pair(k).threshold_m;
+  switch (sys_.modes()[static_cast<std::size_t>(k)].phase) {
+    case ContactPhase::apart:
+      if (s - thr <= 0.0) return Event{k, EventKind::declare, 0.0};
+      break;
+    case ContactPhase::touching:
+      if (s - thr > 0.0) return Event{k, EventKind::release, 0.0};
+      if (s < 0.0 && e.unclamped_force_n > 0.0) return Event{k, EventKind::press, 0.0};
+      break;
+    case ContactPhase::pressing:
+      if (e.unclamped_force_n < 0.0) return Event{k, EventKind::clamp, 0.0};
+      if (s > 0.0) return Event{k, EventKind::lift, 0.0};
+      break;
+  }
+  return std::nullopt;
+}
+
 void ReferenceSolver::refresh_and_settle() {
-  // a phase change at a point where another is already due (thr = 0, or an
-  // initial state in contact) is applied at once, without a step
-  for (int iter = 0; iter < 8; ++iter) {
+  // A phase change at a point where another is already due (thr = 0, or an
+  // initial state in contact: a scene pressed in at its static pose) is
+  // applied at once, without a step. Whether a pair's change is due depends
+  // on its own geometry and law alone, so the pairs settle one after another,
+  // each until nothing of it is due; the whole derivative is taken once they
+  // have (before: one change a pass and 8 passes, so that four pairs pressed
+  // in at t = 0 could not start).
+  sys_.derivative(y_, f_);
+  pairs_ = sys_.last_pairs();
+  bool changed = false;
+  for (const int k : sys_.active()) {
+    const auto ku = static_cast<std::size_t>(k);
+    for (int changes = 0;; ++changes) {
+      const std::optional<Event> due = due_now(k, pairs_[ku]);
+      if (!due) break;
+      if (changes == kMaxSettleChanges) {
+        throw EngineError(fmt::format(
+            "reference: contact '{}' does not settle at t = {:.15g} s: its phase changed {} times "
+            "at that instant (gap {:.6g} m, law force {:.6g} N)",
+            sys_.pair(k).name, t_, changes, pairs_[ku].geometry.gap_m,
+            pairs_[ku].unclamped_force_n));
+      }
+      apply(*due);
+      changed = true;
+      pairs_[ku] = sys_.evaluate_pair(k, y_, sys_.modes()[ku]);
+    }
+  }
+  if (changed) {
     sys_.derivative(y_, f_);
     pairs_ = sys_.last_pairs();
-    std::optional<Event> due;
-    for (int k = 0; k < sys_.pair_count() && !due; ++k) {
-      const auto ku = static_cast<std::size_t>(k);
-      const PairEvaluation& e = pairs_[ku];
-      const double s = e.geometry.gap_m;
-      const double thr = sys_.pair(k).threshold_m;
-      switch (sys_.modes()[ku].phase) {
-        case ContactPhase::apart:
-          if (s - thr <= 0.0) due = Event{k, EventKind::declare, 0.0};
-          break;
-        case ContactPhase::touching:
-          if (s - thr > 0.0) {
-            due = Event{k, EventKind::release, 0.0};
-          } else if (s < 0.0 && e.unclamped_force_n > 0.0) {
-            due = Event{k, EventKind::press, 0.0};
-          }
-          break;
-        case ContactPhase::pressing:
-          if (e.unclamped_force_n < 0.0) {
-            due = Event{k, EventKind::clamp, 0.0};
-          } else if (s > 0.0) {
-            due = Event{k, EventKind::lift, 0.0};
-          }
-          break;
-      }
-    }
-    if (!due) return;
-    apply(*due);
   }
-  throw EngineError(fmt::format("reference: contact phases do not settle at t = {:.15g} s", t_));
+}
+
+void ReferenceSolver::grow_state() {
+  const int n = sys_.state_size();
+  auto grow = [n](Eigen::VectorXd& v) {
+    const Eigen::Index m = v.size();
+    if (m == 0 || m == n) return;
+    v.conservativeResize(n);
+    v.tail(n - m).setZero();
+  };
+  for (Eigen::VectorXd* v : {&y_, &f_, &y_out_}) grow(*v);
+  // the kept steps: the new pairs' slots were 0 through them, their phase apart
+  const auto pairs = static_cast<std::size_t>(sys_.pair_count());
+  for (Segment& sg : seg_) {
+    for (Eigen::VectorXd* c : {&sg.dense.c0, &sg.dense.c1, &sg.dense.c2, &sg.dense.c3, &sg.dense.c4}) {
+      grow(*c);
+    }
+    sg.modes.resize(pairs);
+  }
+  out_modes_.resize(pairs);
+  out_pairs_.resize(pairs);
+  open_.resize(pairs);
+  pairs_.resize(pairs);
 }
 
 // ---- stepping ---------------------------------------------------------------
@@ -328,7 +470,8 @@ double ReferenceSolver::propose_step() const {
       // paper §3.1: the step follows the closest distance
       bool any_declared = false;
       double h = settings_.h_max;
-      for (std::size_t k = 0; k < modes.size(); ++k) {
+      for (const int ki : sys_.active()) {
+        const auto k = static_cast<std::size_t>(ki);
         if (declared(modes[k])) {
           any_declared = true;
           continue;
@@ -345,7 +488,8 @@ double ReferenceSolver::propose_step() const {
     case IntegratorKind::rk45: {
       double h = std::min(h_next_, settings_.h_max);
       // no contact can hide inside a step: at most twice the time to close the gap
-      for (std::size_t k = 0; k < modes.size(); ++k) {
+      for (const int ki : sys_.active()) {
+        const auto k = static_cast<std::size_t>(ki);
         const double closing = -pairs_[k].gap_rate_mps;
         if (declared(modes[k]) || !(closing > 0.0)) continue;
         const double to_close = (pairs_[k].geometry.gap_m - sys_.pair(static_cast<int>(k)).threshold_m) / closing;
@@ -417,6 +561,12 @@ void ReferenceSolver::accept(double h, std::optional<double> exact_end) {
 }
 
 void ReferenceSolver::step(double t_limit) {
+  // a scene's broad phase: the near group pairs, rebuilt when due
+  if (sys_.update_near(y_)) {
+    grow_state();
+    sys_.derivative(y_, f_);
+    pairs_ = sys_.last_pairs();
+  }
   double h = propose_step();
   std::optional<double> land;
   if (kind_ == IntegratorKind::fixed) {
@@ -430,10 +580,20 @@ void ReferenceSolver::step(double t_limit) {
   bool rejected = false;
   for (;;) {
     const double err = trial(h);
-    if (kind_ != IntegratorKind::rk45 || err <= 1.0) break;
+    // a trial that moves a group body past its broad-phase margin could
+    // miss a contact (near_pairs.hpp): shorter
+    const double excursion = sys_.near_excursion(y1_);
+    const bool too_far = excursion >= 1.0;
+    if (too_far && kind_ != IntegratorKind::rk45) {
+      throw EngineError(fmt::format(
+          "reference: a body moved {:.3g} times its broad-phase margin in one {} step of {:.3g} s "
+          "at t = {:.15g} s: a contact could be missed; use a shorter dt or integrator rk45",
+          excursion, kind_ == IntegratorKind::fixed ? "fixed" : "paper", h, t_));
+    }
+    if (!too_far && (kind_ != IntegratorKind::rk45 || err <= 1.0)) break;
     ++stats_.rejected;
     rejected = true;
-    h *= std::max(0.1, 0.9 * std::pow(err, -0.2));
+    h *= too_far ? 0.5 : std::max(0.1, 0.9 * std::pow(err, -0.2));
     land.reset();
     if (h < 1e-14 * std::max(1.0, std::abs(t_))) {
       throw EngineError(fmt::format("reference: step size underflow at t = {:.15g} s", t_));
@@ -442,22 +602,41 @@ void ReferenceSolver::step(double t_limit) {
   const double h_tried = h;
   const double err = err1_;
 
-  const std::optional<Event> ev = first_event(h);
+  std::optional<Event> ev = first_event(h);
+  // A zero-length event that would undo this pair's last one at this very
+  // instant: the pair sits on the boundary of both phases, its gap and rate
+  // at the rounding of the state (bodies released touching at rest: a
+  // pyramid's bricks fall together, every gap 0 +- 1e-17 m, and press and
+  // clamp each found the other due, without end). It keeps its phase for
+  // this step; the step's end decides it (settle_grazing). A contact that
+  // flips this way is one whose force is 0 either way.
+  while (ev && ev->tau == 0.0 && undoes_zero_length_event(*ev)) {
+    grazing_.push_back(ev->pair);
+    trial(h);  // the located probes moved the trial: the step's end again
+    ev = first_event(h);
+  }
   if (ev) {
     if (ev->tau > 0.0) {
       accept(ev->tau, std::nullopt);
-      zero_length_events_ = 0;
-    } else if (++zero_length_events_ > 8) {
-      throw EngineError(fmt::format("reference: contact chatters at t = {:.15g} s", t_));
+      zero_length_events_.clear();
+    } else {
+      count_zero_length_event(*ev);
     }
+    const ContactPhase before = sys_.modes()[static_cast<std::size_t>(ev->pair)].phase;
     apply(*ev);
     refresh_and_settle();
+    // ... or one the settle undid at once (pressed at a gap of exactly 0
+    // with the law's force at -0: clamped back): held the same way
+    if (ev->tau == 0.0 && sys_.modes()[static_cast<std::size_t>(ev->pair)].phase == before) {
+      grazing_.push_back(ev->pair);
+    }
   } else {
     accept(h, land);
-    zero_length_events_ = 0;
+    zero_length_events_.clear();
     if (kind_ == IntegratorKind::fixed) ++grid_next_;
   }
   if (!ev || ev->tau > 0.0) record_samples();
+  if (!ev || ev->tau > 0.0) settle_grazing();
 
   if (kind_ == IntegratorKind::rk45) {
     // HNW I §II.4: h_new = h * min(facmax, max(facmin, 0.9 err^(-1/5)))
@@ -490,6 +669,68 @@ void ReferenceSolver::advance_to(double t_s) {
   }
 }
 
+namespace {
+// the contact phase an event leads to (slip events keep it)
+ContactPhase phase_after(int kind, ContactPhase now) {
+  switch (kind) {
+    case 0: return ContactPhase::touching;  // declare
+    case 1: return ContactPhase::apart;     // release
+    case 2:                                 // press
+    case 3: return ContactPhase::pressing;  // unclamp
+    case 4:                                 // clamp
+    case 5: return ContactPhase::touching;  // lift
+    default: return now;
+  }
+}
+}  // namespace
+
+bool ReferenceSolver::undoes_zero_length_event(const Event& ev) const {
+  const auto it = std::find_if(zero_length_events_.begin(), zero_length_events_.end(),
+                               [&](const ZeroLength& z) { return z.pair == ev.pair; });
+  if (it == zero_length_events_.end()) return false;
+  const ContactPhase now = sys_.modes()[static_cast<std::size_t>(ev.pair)].phase;
+  const ContactPhase next = phase_after(static_cast<int>(ev.kind), now);
+  return next != now && next == it->phase_before;
+}
+
+void ReferenceSolver::settle_grazing() {
+  if (grazing_.empty()) return;
+  bool changed = false;
+  for (const int k : grazing_) {
+    const auto ku = static_cast<std::size_t>(k);
+    for (int changes = 0; changes < kMaxSettleChanges; ++changes) {
+      const std::optional<Event> due = due_now(k, pairs_[ku]);
+      if (!due) break;
+      apply(*due);
+      changed = true;
+      pairs_[ku] = sys_.evaluate_pair(k, y_, sys_.modes()[ku]);
+    }
+  }
+  grazing_.clear();
+  if (changed) {
+    sys_.derivative(y_, f_);
+    pairs_ = sys_.last_pairs();
+  }
+}
+
+void ReferenceSolver::count_zero_length_event(const Event& ev) {
+  // per pair: several pairs due at one instant are each one event, not chatter
+  auto it = std::find_if(zero_length_events_.begin(), zero_length_events_.end(),
+                         [&](const ZeroLength& z) { return z.pair == ev.pair; });
+  if (it == zero_length_events_.end()) {
+    const PairMode& m = sys_.modes()[static_cast<std::size_t>(ev.pair)];
+    zero_length_events_.push_back(ZeroLength{ev.pair, 0, m.phase});
+    it = zero_length_events_.end() - 1;
+  }
+  if (++it->count > kMaxZeroLengthEvents) {
+    const PairEvaluation& e = pairs_[static_cast<std::size_t>(ev.pair)];
+    throw EngineError(fmt::format(
+        "reference: contact '{}' chatters at t = {:.15g} s: {} phase changes in a row without a "
+        "step between them (gap {:.6g} m, law force {:.6g} N)",
+        sys_.pair(ev.pair).name, t_, it->count, e.geometry.gap_m, e.unclamped_force_n));
+  }
+}
+
 // ---- episodes ---------------------------------------------------------------
 
 const ReferenceSolver::Segment& ReferenceSolver::segment_at(double t_s) const {
@@ -499,7 +740,7 @@ const ReferenceSolver::Segment& ReferenceSolver::segment_at(double t_s) const {
 }
 
 void ReferenceSolver::record_samples() {
-  for (int k = 0; k < sys_.pair_count(); ++k) {
+  for (const int k : sys_.active()) {
     const auto ku = static_cast<std::size_t>(k);
     EpisodeState& st = open_[ku];
     if (!st.open) continue;
@@ -580,7 +821,7 @@ void ReferenceSolver::set_output(double t_s) {
     return;
   }
   out_pairs_.resize(out_modes_.size());
-  for (int k = 0; k < sys_.pair_count(); ++k) {
+  for (const int k : sys_.active()) {
     const auto ku = static_cast<std::size_t>(k);
     if (declared(out_modes_[ku])) out_pairs_[ku] = sys_.evaluate_pair(k, y_out_, out_modes_[ku]);
   }
@@ -590,8 +831,8 @@ BodyState ReferenceSolver::body_state(int body) const { return sys_.body_state(b
 
 void ReferenceSolver::contacts(std::vector<ContactSample>& out) const {
   out.clear();
-  for (int k = 0; k < sys_.pair_count(); ++k) {
-    const auto ku = static_cast<std::size_t>(k);
+  for (std::size_t ku = 0; ku < out_modes_.size(); ++ku) {
+    const int k = static_cast<int>(ku);
     if (!declared(out_modes_[ku])) continue;
     const PairEvaluation& e = out_pairs_[ku];
     ContactSample cs;

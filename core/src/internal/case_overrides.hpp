@@ -4,9 +4,12 @@
 //
 //   duration, output_interval, gravity,   -> [case].<key>
 //   outline_points, truth
-//   contact.<field...>                     -> <field...> of every [[contacts]]
+//   contact.<field...>                     -> <field...> of every [[contacts]] and
+//                                             every [[contact_groups]]
 //   contacts.<name>.<field...>             -> <field...> of the contact named <name>
+//   groups.<name>.<field...>               -> <field...> of the contact group <name>
 //   bodies.<name>.<field...>               -> <field...> of the body named <name>
+//   generate.<name>.<field...>             -> <field...> of the [[generate]] <name>
 //
 // Keys apply in sorted order, so contacts.<name>.x is applied after (and wins
 // over) contact.x. Giving one of two alternative ways of stating a quantity
@@ -76,16 +79,21 @@ class CaseOverrideApplier {
       set_path(*root_, {"case", segs[0]}, 0, v);
       return;
     }
-    // every contact
+    // every contact pair and group
     if (segs[0] == "contact") {
-      const auto entries = named_entries("contacts");
-      if (entries.empty()) fail("the case has no [[contacts]] to apply it to");
+      auto entries = named_entries("contacts");
+      const auto groups = named_entries("contact_groups");
+      entries.insert(entries.end(), groups.begin(), groups.end());
+      if (entries.empty()) fail("the case has no [[contacts]] or [[contact_groups]] to apply it to");
       for (const auto& e : entries) set_path(*e.second, segs, 1, v);
       return;
     }
-    // one named contact or body
-    if ((segs[0] == "contacts" || segs[0] == "bodies") && segs.size() >= 3) {
-      const auto entries = named_entries(segs[0]);
+    // one named contact, group, body or generator
+    if ((segs[0] == "contacts" || segs[0] == "bodies" || segs[0] == "groups" ||
+         segs[0] == "generate") &&
+        segs.size() >= 3) {
+      const std::string array = segs[0] == "groups" ? "contact_groups" : segs[0];
+      const auto entries = named_entries(array);
       std::vector<std::string> names;
       bool found = false;
       for (const auto& e : entries) {
@@ -96,15 +104,23 @@ class CaseOverrideApplier {
         }
       }
       if (!found) {
-        const char* what = segs[0] == "bodies" ? "body" : "contact";
-        fail(fmt::format("the case has no {} named '{}'{}; {}: {}", what, segs[1],
+        const char* what = segs[0] == "bodies"     ? "body"
+                           : segs[0] == "groups"   ? "contact group"
+                           : segs[0] == "generate" ? "[[generate]] table"
+                                                   : "contact";
+        const std::string hint =
+            segs[0] == "bodies" && !named_entries("generate").empty()
+                ? " (a generated body is set through its generator: generate.<name>.<field>)"
+                : "";
+        fail(fmt::format("the case has no {} named '{}'{}; {}: {}{}", what, segs[1],
                          did_you_mean(segs[1], names), segs[0],
-                         names.empty() ? "none" : join_words(names)));
+                         names.empty() ? "none" : join_words(names), hint));
       }
       return;
     }
     fail("not a case key (duration, output_interval, gravity, outline_points, truth, "
-         "contact.<field>, contacts.<name>.<field>, bodies.<name>.<field>)");
+         "contact.<field>, contacts.<name>.<field>, groups.<name>.<field>, "
+         "bodies.<name>.<field>, generate.<name>.<field>)");
   }
 
  private:

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "box2d_test_cases.hpp"
+#include "planarbench/contact_law_response.hpp"
 
 namespace pb::internal::box2d {
 namespace {
@@ -27,6 +28,30 @@ TEST(Box2dRestitution, KelvinVoigtIsTheClampedClosedForm) {
   EXPECT_NEAR(law_restitution(kv, 1.0, 6.0), 0.8588, 1e-4);
   EXPECT_TRUE(restitution_depends_on_state(kv));
   EXPECT_NE(law_restitution_method(kv).find("kelvin_voigt_response"), std::string::npos);
+}
+
+// An overdamped Kelvin-Voigt contact (zeta >= 1: a brick pyramid's 1e6 N/m,
+// 2000 N s/m at m_eff 0.3-0.5 kg) takes the closed form of the clamped
+// overdamped oscillator (box2d_restitution.hpp), checked against
+// simulate_collision's RK4 of the same law (20000 steps, 1e-8 relative:
+// tolerance 1e-6); e^-2 at zeta = 1 exactly, and continuous with the
+// underdamped closed form there (1e-3: zeta = 1 - 1e-6 moves e by ~1e-4
+// through the square root of 1 - zeta^2).
+TEST(Box2dRestitution, OverdampedKelvinVoigtIsItsClosedForm) {
+  const double k = 1e6;  // N/m
+  for (const double zeta : {1.0, 1.0001, 1.3, 1.79, 3.0, 10.0}) {
+    const double m = 0.3;                              // kg
+    const double c = 2.0 * zeta * std::sqrt(k * m);    // N s/m
+    const ContactLaw kv = KelvinVoigt{k, c, 0.0};
+    const double e = law_restitution(kv, m, 0.5);
+    EXPECT_NEAR(e, simulate_collision(kv, m, 0.5).restitution, 1e-6) << zeta;
+    EXPECT_NEAR(e, overdamped_kv_restitution(k, c, m), 1e-15) << zeta;
+    EXPECT_GT(e, 0.0) << zeta;  // the clamp releases while the mass still moves out
+  }
+  EXPECT_NEAR(overdamped_kv_restitution(1e6, 2e3, 1.0), std::exp(-2.0), 1e-15);
+  EXPECT_NEAR(box2d_test::clamped_kv_restitution(1e6, 2e3, 1.0 + 1e-6), std::exp(-2.0), 1e-3);
+  // more damping, less restitution
+  EXPECT_GT(overdamped_kv_restitution(1e6, 3e3, 1.0), overdamped_kv_restitution(1e6, 6e3, 1.0));
 }
 
 // Lankarani-Nikravesh's restitution is not its nominal e, and it does not

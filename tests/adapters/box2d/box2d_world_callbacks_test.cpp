@@ -19,17 +19,6 @@
 namespace pb::internal::box2d {
 namespace {
 
-TEST(Box2dWorldCallbacks, PairTableIsSymmetric) {
-  PairTable t;
-  t.reset(3);
-  t.set(0, 2, 5);
-  EXPECT_EQ(t.pair(0, 2), 5);
-  EXPECT_EQ(t.pair(2, 0), 5);
-  EXPECT_EQ(t.pair(0, 1), -1);
-  EXPECT_EQ(t.pair(-1, 0), -1);  // fixtures without a body index
-  EXPECT_EQ(t.pair(0, 7), -1);
-}
-
 // A world of a ground and two disks dropped side by side, with one case
 // contact pair (ground, disk 1) of restitution law Kelvin-Voigt (e = 0.8588
 // for 1 kg, zeta = 0.05). The filter lets only that pair collide: disk 2
@@ -43,9 +32,11 @@ TEST(Box2dWorldCallbacks, PairTableIsSymmetric) {
 // (its mass data set after the fixtures, as the adapter does)
 struct CallbackWorld {
   CallbackWorld(int body_count, PairState state) {
-    pairs.reset(body_count);
-    pairs.set(0, 1, 0);
-    states.assign(1, state);
+    Case c;
+    c.bodies.resize(static_cast<std::size_t>(body_count));
+    c.bodies[0].fixed = true;
+    c.contacts = {box2d_test::kv_pair(0, 1)};
+    pairs.reset(c, {state}, {});
     inertia.assign(static_cast<std::size_t>(body_count),
                    BodyInertia{false, 1.0, 0.02, Vec2::Zero(), false, Vec2::Zero()});
     inertia[0].fixed = true;
@@ -68,13 +59,12 @@ struct CallbackWorld {
     return body;
   }
   b2World world{b2Vec2(0.0f, -9.8066f)};
-  PairTable pairs;
+  PairBook pairs;
   bool enabled = true;
   PairContactFilter filter{pairs, enabled};
-  std::vector<PairState> states;
   std::vector<BodyInertia> inertia;
   double time_s = 0.0;
-  PairContactListener listener{pairs, states, inertia, time_s};
+  PairContactListener listener{pairs, inertia, time_s};
   std::vector<b2Body*> bodies;
 };
 
@@ -91,7 +81,7 @@ TEST(Box2dWorldCallbacks, OnlyCasePairsCollideAndBounceWithTheLawsRestitution) {
   w.add(box2d_test::disk_body("d2", 0.2, 1.0, Vec2(1.0, 0.5)));
   b2World& world = w.world;
   std::vector<b2Body*>& bodies = w.bodies;
-  std::vector<PairState>& states = w.states;
+  PairBook& book = w.pairs;
   double& time_s = w.time_s;
   const PairContactListener& listener = w.listener;
   double approach = 0.0;
@@ -99,10 +89,10 @@ TEST(Box2dWorldCallbacks, OnlyCasePairsCollideAndBounceWithTheLawsRestitution) {
   double impulse = 0.0;
   for (int i = 0; i < 5000; ++i) {
     const double vy_before = static_cast<double>(bodies[1]->GetLinearVelocity().y);
-    states[0].step_impulse_ns = 0.0;
+    book.step = i + 1;  // the step's stamp: PostSolve's sums start from 0
     world.Step(static_cast<float>(dt), 8, 3);
     time_s += dt;
-    impulse += states[0].step_impulse_ns;
+    impulse += book.state(0).impulse_ns(i + 1);
     const double vy_after = static_cast<double>(bodies[1]->GetLinearVelocity().y);
     if (vy_before < 0.0 && vy_after > 0.0 && approach == 0.0) {
       approach = -vy_before;
@@ -130,9 +120,12 @@ TEST(Box2dWorldCallbacks, OnlyCasePairsCollideAndBounceWithTheLawsRestitution) {
 // with collisions disabled (injection mode) nothing collides
 TEST(Box2dWorldCallbacks, DisabledFilterRejectsEverything) {
   b2World world(b2Vec2(0.0f, -9.8066f));
-  PairTable pairs;
-  pairs.reset(2);
-  pairs.set(0, 1, 0);
+  Case c;
+  c.bodies.resize(2);
+  c.bodies[0].fixed = true;
+  c.contacts = {box2d_test::kv_pair(0, 1)};
+  PairBook pairs;
+  pairs.reset(c, {PairState{}}, {});
   const bool enabled = false;
   PairContactFilter filter(pairs, enabled);
   world.SetContactFilter(&filter);

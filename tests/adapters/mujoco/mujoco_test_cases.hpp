@@ -116,6 +116,19 @@ inline Case dual_pendulum(double duration_s = 2.0) {
   return cs;
 }
 
+// native mode's options for c: every declared pair and contact group with
+// the direct solref (0, 0), set by the rule once pressed, and solimp at the
+// adapter's default
+inline internal::mujoco::MjcfOptions native_options(const Case& c) {
+  internal::mujoco::MjcfOptions o;
+  internal::mujoco::PairParams p;
+  p.solref = {0.0, 0.0};
+  p.solimp = {0.9999, 0.9999, 0.001, 0.5, 2.0};
+  o.pairs.assign(c.contacts.size(), p);
+  o.groups.assign(c.contact_groups.size(), p);
+  return o;
+}
+
 // the MuJoCo model of c under options o, written from c's plan with the
 // given detection margin (m), and the layout of its names
 inline internal::mujoco::ModelPtr load_case(const Case& c, const internal::mujoco::MjcfOptions& o,

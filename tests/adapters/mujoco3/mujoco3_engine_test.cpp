@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -20,6 +21,7 @@
 #include "planarbench/case_loader.hpp"
 #include "planarbench/errors.hpp"
 #include "planarbench/runner.hpp"
+#include "scene_cases.hpp"
 
 namespace pb {
 namespace {
@@ -129,6 +131,86 @@ TEST(Mujoco3Friction, SolreffrictionOnTheEllipticConeStopsTheSlipWithinTheContac
   EXPECT_LT(at_default, 0.0);
 }
 
+// ---- scenes (SPEC §11): contact groups through MuJoCo 3.3.8's broad phase ---
+
+// Newton's cradle with gaps: sphere-sphere is an exact collider in both
+// versions and the rule is the same, so 3.3.8 gives 2.2.2's run to
+// rounding; momentum is exact in both.
+TEST(Mujoco3Scenes, CradleIsMujoco222sRunAndConservesMomentum) {
+  const Case c = test::scene_case("cradle_5", 0.4);
+  const RunResult a = run3(c);
+  auto e2 = make_mujoco_engine();
+  const RunResult b = run_engine(*e2, c, {});
+  ASSERT_EQ(a.status, RunStatus::ok) << a.reason;
+  ASSERT_EQ(b.status, RunStatus::ok) << b.reason;
+  ASSERT_EQ(a.bodies.size(), 5u);
+  double momentum = 0.0;
+  double apart = 0.0;
+  for (std::size_t i = 0; i < a.bodies[0].time_s.size(); ++i) {
+    double p = 0.0;  // kg m/s, all disks are 1 kg
+    for (std::size_t k = 0; k < 5; ++k) {
+      p += a.bodies[k].velocity_mps[i].x();
+      apart = std::max(apart, (a.bodies[k].position_m[i] - b.bodies[k].position_m[i]).norm());
+    }
+    momentum = std::max(momentum, std::abs(p - 1.0));
+  }
+  // 1e-12 kg m/s: the rounding of 4000 velocity updates of ~1 m/s
+  EXPECT_LT(momentum, 1e-12);
+  // 1e-12 m: as FallingBallIsMujoco222sRunToRounding (a collider or rule
+  // that differs shows at the 2 mm penetrations' scale)
+  EXPECT_LT(apart, 1e-12);
+  // the arena MuJoCo 3 used, and the pairs its broad phase found
+  const nlohmann::json& cap = a.extra.at("mujoco3_capacity");
+  EXPECT_EQ(cap.at("group_pairs_found"), 4);  // the four neighbour pairs
+  EXPECT_LE(cap.at("maxuse_arena_bytes").get<double>(), cap.at("narena_bytes").get<double>());
+}
+
+// Two boxes stacked at their resting pose, on their faces (multiccd, on for
+// a group of polygons: MuJoCo 3's native collider clips the faces): the
+// interfaces carry 2 m g and m g.
+TEST(Mujoco3Scenes, StackOfTwoCarriesItsWeights) {
+  const Case c = test::scene_case("stack_2", 0.3);
+  const RunResult r = run3(c);
+  ASSERT_EQ(r.status, RunStatus::ok) << r.reason;
+  const double kG = 9.8066;
+  // 15 %: measured 1.000 and 1.111 m g at 2 s (multiccd's contacts share
+  // the top face's load unevenly); a face held at one corner carries tens of
+  // times the weight
+  EXPECT_NEAR(test::pair_force_at(r, c, "ground", "box_1", c.duration_s) / (2.0 * kG), 1.0, 0.15);
+  EXPECT_NEAR(test::pair_force_at(r, c, "box_1", "box_2", c.duration_s) / kG, 1.0, 0.15);
+}
+
+// Without multiccd MuJoCo 3's convex collider (GJK and EPA, nativeccd)
+// reports one contact per two boxes: a stack of ten stands on one point per
+// interface and is kicked apart in the first millisecond, as on 2.2.2.
+TEST(Mujoco3Scenes, StackOfTenOnOneContactEachIsKickedApart) {
+  const Case c = test::scene_case("stack_10", 0.01);
+  const RunResult r = run3(c, given({{"mujoco3.multiccd", "off"}}));
+  ASSERT_EQ(r.status, RunStatus::diverged);
+  EXPECT_NE(r.reason.find("energy runaway"), std::string::npos) << r.reason;
+  EXPECT_LE(r.diverged_at_s, 2e-3);  // measured 1 ms
+}
+
+// A finding of 3.3.8, pinned: with multiccd its native collider reports,
+// for two bricks touching side by side in pyramid_5 (true depth ~1e-5 m),
+// one contact 0.178 m deep along an out-of-plane direction of the bricks'
+// bipyramids (measured at t = 2.3 ms), and the run blows up; without it the
+// pyramid stands. 2.2.2 (libccd MPR, multiccd on) stands either way.
+TEST(Mujoco3Scenes, PyramidMulticcdMeetsAFalseDeepContact) {
+  const Case c = test::scene_case("pyramid_5", 0.05);
+  const RunResult on = run3(c);
+  ASSERT_EQ(on.status, RunStatus::diverged) << "3.3.8's collider no longer fails here";
+  double deepest = 0.0;
+  for (const ContactRow& row : on.contacts) deepest = std::max(deepest, row.sample.penetration_m);
+  EXPECT_GT(deepest, 0.1);  // m: the bricks are 0.2 m tall; the law presses ~1e-5 m
+  const RunResult off = run3(c, given({{"mujoco3.multiccd", "off"}}));
+  ASSERT_EQ(off.status, RunStatus::ok) << off.reason;
+  deepest = 0.0;
+  for (const ContactRow& row : off.contacts) deepest = std::max(deepest, row.sample.penetration_m);
+  // 1e-4 m: a brick's weight share over K = 1e6 N/m is ~3e-5 m (measured 1.6e-5)
+  EXPECT_LT(deepest, 1e-4);
+}
+
 TEST(Mujoco3Settings, SolreffrictionNeedsTheEllipticCone) {
   const Case c = load("disk_oblique_roll");
   auto e = make_mujoco3_engine();
@@ -157,7 +239,7 @@ TEST(Mujoco3Failures, ACrashEndsTheRunWithWhatTheProcessSaid) {
   try {
     const std::string xml = "<mujoco/>";
     p.send(internal::mujoco3::Kind::load, xml.data(), xml.size());
-    (void)p.receive_text(internal::mujoco3::Kind::info);
+    (void)p.receive_info("LOAD", {});
     FAIL() << "answered";
   } catch (const EngineError& x) {
     const std::string w = x.what();
@@ -172,7 +254,7 @@ TEST(Mujoco3Failures, AHangEndsTheRunAtTheTimeout) {
   in.node = script("hang", "exec sleep 60").string();
   internal::mujoco3::Mujoco3Process p(in, 0.5);
   try {
-    (void)p.receive_text(internal::mujoco3::Kind::info);
+    (void)p.receive_info("LOAD", {});
     FAIL() << "answered";
   } catch (const EngineError& x) {
     EXPECT_NE(std::string(x.what()).find("no answer within 0.5 s (a hang)"), std::string::npos)

@@ -37,11 +37,10 @@ TEST(OdePairContact, NormalFollowsThePairOrder) {
     c.contacts = {ground_first ? pair(0, 1, kKv) : pair(1, 0, kKv)};
     OdeWorld world(c);
     PairCollider collider(c, world);
-    std::vector<PairContact> out;
+    StepContacts out;
     collider.collide(out);
-    ASSERT_EQ(out.size(), 1u);
-    const PairContact& pc = out[0];
-    ASSERT_TRUE(pc.touching);
+    ASSERT_EQ(out.pairs.size(), 1u);
+    const PairContact& pc = out.pairs[0];
     EXPECT_NEAR(pc.depth_m, 0.05, 1e-12);
     const Vec2 up(0.0, 1.0);
     EXPECT_NEAR((pc.normal_ab - (ground_first ? up : Vec2(-up))).norm(), 0.0, 1e-15);
@@ -49,8 +48,8 @@ TEST(OdePairContact, NormalFollowsThePairOrder) {
     EXPECT_NEAR(pc.point_m.y(), -0.025, 1e-12);
     EXPECT_NEAR(pc.approach_speed_mps, 2.0, 1e-12);
     // the ODE contact: g1 has a body and the normal points into it
-    EXPECT_EQ(dGeomGetBody(pc.geoms[0].g1), world.body(1));
-    EXPECT_NEAR(pc.geoms[0].normal[1], 1.0, 1e-15);
+    EXPECT_EQ(dGeomGetBody(out.geom(pc, 0).g1), world.body(1));
+    EXPECT_NEAR(out.geom(pc, 0).normal[1], 1.0, 1e-15);
   }
 }
 
@@ -63,11 +62,11 @@ TEST(OdePairContact, OnlyTheCasePairsCollide) {
   c.contacts = {pair(0, 1, kKv)};
   OdeWorld world(c);
   PairCollider collider(c, world);
-  std::vector<PairContact> out;
+  StepContacts out;
   collider.collide(out);
-  ASSERT_EQ(out.size(), 1u);
-  EXPECT_TRUE(out[0].touching);
-  EXPECT_EQ(out[0].contacts_reported, 1);
+  ASSERT_EQ(out.pairs.size(), 1u);
+  EXPECT_EQ(out.pairs[0].pair, 0);
+  EXPECT_EQ(out.pairs[0].contacts_reported, 1);
 }
 
 // exact distance from p to the polygon's edges (independent of ODE)
@@ -107,13 +106,13 @@ TEST(OdePairContact, SphereConvexDepthMatchesThePolygon) {
       c.contacts = {pair(0, 1, LankaraniNikravesh{1.0242e10, 1.5, 0.7, std::nullopt, {}})};
       OdeWorld world(c);
       PairCollider collider(c, world);
-      std::vector<PairContact> out;
+      StepContacts out;
       collider.collide(out);
-      ASSERT_TRUE(out[0].touching) << y << " " << pen;
-      EXPECT_NEAR(out[0].depth_m, exact, 1e-6) << y << " " << pen;
+      ASSERT_EQ(out.pairs.size(), 1u) << y << " " << pen;
+      EXPECT_NEAR(out.pairs[0].depth_m, exact, 1e-6) << y << " " << pen;
       // from the ellipse to the disk: the outline's faces near the minor
       // axis turn by at most 2 deg (180 points), cos 2 deg = 0.9994
-      EXPECT_GT(out[0].normal_ab.x(), 0.999);
+      EXPECT_GT(out.pairs[0].normal_ab.x(), 0.999);
       ++checked;
     }
   }
@@ -156,16 +155,16 @@ TEST(OdePairContact, RotatedEllipseOnGroundActsAtItsDepthWeightedVertices) {
   c.contacts = {pair(0, 1, kKv)};
   OdeWorld world(c);
   PairCollider collider(c, world);
-  std::vector<PairContact> out;
+  StepContacts out;
   collider.collide(out);
-  ASSERT_TRUE(out[0].touching);
-  EXPECT_EQ(out[0].contacts_reported, 2 * below);  // each vertex on both faces of the prism
-  EXPECT_EQ(out[0].count, below);                  // one kept per in-plane point
-  EXPECT_NEAR(out[0].depth_m, -lowest.y(), 1e-12);
-  EXPECT_NEAR(out[0].depth_sum_m, weight, 1e-12);
-  EXPECT_NEAR(out[0].point_m.x(), moment.x() / weight, 1e-12);
-  EXPECT_NEAR(out[0].point_m.y(), moment.y() / weight, 1e-12);
-  EXPECT_NEAR(out[0].normal_ab.y(), 1.0, 1e-15);
+  ASSERT_EQ(out.pairs.size(), 1u);
+  EXPECT_EQ(out.pairs[0].contacts_reported, 2 * below);  // each vertex on both faces of the prism
+  EXPECT_EQ(out.pairs[0].count, below);                  // one kept per in-plane point
+  EXPECT_NEAR(out.pairs[0].depth_m, -lowest.y(), 1e-12);
+  EXPECT_NEAR(out.pairs[0].depth_sum_m, weight, 1e-12);
+  EXPECT_NEAR(out.pairs[0].point_m.x(), moment.x() / weight, 1e-12);
+  EXPECT_NEAR(out.pairs[0].point_m.y(), moment.y() / weight, 1e-12);
+  EXPECT_NEAR(out.pairs[0].normal_ab.y(), 1.0, 1e-15);
 }
 
 // The boot of concave_seam_face.toml 2 mm into the ground on its sole: two
@@ -189,13 +188,13 @@ TEST(OdePairContact, VertexSharedByTwoPiecesIsOneContact) {
   c.contacts = {pair(0, 1, kKv)};
   OdeWorld world(c);
   PairCollider collider(c, world);
-  std::vector<PairContact> out;
+  StepContacts out;
   collider.collide(out);
-  ASSERT_TRUE(out[0].touching);
-  EXPECT_EQ(out[0].contacts_reported, 6);
-  EXPECT_EQ(out[0].count, 2);
-  EXPECT_NEAR(out[0].depth_sum_m, 2 * 0.002, 1e-12);
-  EXPECT_NEAR(out[0].point_m.x(), 0.0, 1e-12);
+  ASSERT_EQ(out.pairs.size(), 1u);
+  EXPECT_EQ(out.pairs[0].contacts_reported, 6);
+  EXPECT_EQ(out.pairs[0].count, 2);
+  EXPECT_NEAR(out.pairs[0].depth_sum_m, 2 * 0.002, 1e-12);
+  EXPECT_NEAR(out.pairs[0].point_m.x(), 0.0, 1e-12);
 }
 
 // Disk against disk (sphere-sphere): ODE's pos is the midpoint already.
@@ -207,13 +206,13 @@ TEST(OdePairContact, SphereSphereMidpoint) {
   c.contacts = {pair(0, 1, kKv)};
   OdeWorld world(c);
   PairCollider collider(c, world);
-  std::vector<PairContact> out;
+  StepContacts out;
   collider.collide(out);
-  ASSERT_TRUE(out[0].touching);
-  EXPECT_NEAR(out[0].depth_m, 0.05, 1e-12);
+  ASSERT_EQ(out.pairs.size(), 1u);
+  EXPECT_NEAR(out.pairs[0].depth_m, 0.05, 1e-12);
   // left's rightmost point 0.5, right's leftmost 0.45: midpoint 0.475
-  EXPECT_NEAR(out[0].point_m.x(), 0.475, 1e-12);
-  EXPECT_NEAR(out[0].normal_ab.x(), 1.0, 1e-15);
+  EXPECT_NEAR(out.pairs[0].point_m.x(), 0.475, 1e-12);
+  EXPECT_NEAR(out.pairs[0].normal_ab.x(), 1.0, 1e-15);
 }
 
 }  // namespace

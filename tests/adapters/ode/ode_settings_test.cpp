@@ -11,15 +11,16 @@ namespace pb::internal::ode {
 namespace {
 
 // the stated defaults (the brief and ENGINES.md): dt 1e-4 s, ODE at that step
-// (no sub-steps: SPEC §5b, the step the user gives), the direct stepper, the
-// corrected damping mapping, native contacts
+// (no sub-steps: SPEC §5b, the step the user gives), the stepper by the case
+// (auto: direct for declared pairs, quick for a scene), the corrected damping
+// mapping, native contacts
 TEST(OdeSettings, DefaultsAreTheStatedOnes) {
   OdeSettings s;
   const nlohmann::json j = bind_ode_settings(s).to_json();
   EXPECT_EQ(j.at("dt").get<double>(), 1e-4);
   EXPECT_EQ(j.at("substeps").get<int>(), 1);
   EXPECT_EQ(j.at("contact_steps").get<int>(), 20);
-  EXPECT_EQ(j.at("stepper").get<std::string>(), "world");
+  EXPECT_EQ(j.at("stepper").get<std::string>(), "auto");
   EXPECT_EQ(j.at("quick_iterations").get<int>(), 20);
   EXPECT_EQ(j.at("damping_mapping").get<std::string>(), "corrected");
   EXPECT_EQ(j.at("mode").get<std::string>(), "native");

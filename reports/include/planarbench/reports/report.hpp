@@ -32,6 +32,9 @@ struct ReportOptions {
   // a file of `planarbench impacts fit` or `impacts score`: adds the
   // measured-impacts section (such a file given as `results` does too); empty: none
   std::filesystem::path impacts;
+  // a results file of scenes (`planarbench run --case scenes`): adds the
+  // scenes section (SPEC §11); empty: the scenes of `results`, if any
+  std::filesystem::path scenes;
   std::filesystem::path out_dir;     // created when missing
   std::filesystem::path thresholds;  // empty: no pass/fail column
   // folder with report_template.html, report.js, report.css and

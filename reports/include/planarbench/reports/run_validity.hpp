@@ -40,8 +40,11 @@ struct InvalidRun {
 
 // Every dataset of every run of `cr` with a non-finite value, in the file's
 // order: runs as stored, each body's time, position, angle, velocity and
-// angular_velocity, then the contacts table's time and force_n. Unsupported
-// runs have no samples to check.
+// angular_velocity, the contacts table's time, force_n, normal and point_m
+// (and an infinity in its penetration_m, tangential_force_n or slip_mps),
+// then the events table's onset_time_s, approach_speed_mps, peak_force_n and
+// impulse_ns (and an infinity in the rest). Unsupported runs have no samples
+// to check.
 [[nodiscard]] std::vector<InvalidRun> invalid_runs(const CaseRuns& cr);
 
 // the first entry of `invalid` about run (case_name, engine); null when none

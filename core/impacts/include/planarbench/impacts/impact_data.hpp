@@ -34,8 +34,11 @@ inline constexpr std::array<const char*, 6> kStoredModelNames = {
     "mirtich",          "wang_mason",             "whittaker"};
 
 // Reads a MAT v5 file of impacts. InputError naming the file, the variable
-// and what was expected (its class and shape) for anything else.
-[[nodiscard]] ImpactSet read_impacts(const std::filesystem::path& path);
+// and what was expected (its class and shape) for anything else; a file that
+// is no MAT file at all is blamed on `option`, the command's option that
+// named it (--data, or score's --training-data).
+[[nodiscard]] ImpactSet read_impacts(const std::filesystem::path& path,
+                                     const std::string& option = "--data");
 
 // Writes `set` in the same layout (zlib-compressed MAT v5): tests make their
 // own files with it. Throws std::runtime_error when libmatio fails.

@@ -8,6 +8,11 @@
 // tangential impulse Jt_k' = f_k (N s) and the energy its friction has
 // dissipated, W_k' = -f_k v_k >= 0 (J): y = [q, u, J, Jt, W]. A frictionless
 // case keeps y = [q, u, J] and the arithmetic it always had.
+// A case with contact groups (SPEC §11) appends each group pair's slots, [J]
+// or [J, Jt, W], after the declared pairs' when its broad phase
+// (near_pairs.hpp) first finds the pair: y grows between steps, and a
+// declared-only case keeps the layout above bit for bit. Only the active
+// pairs (every declared pair, the group pairs near now) are evaluated.
 //
 // Contact forces (paper §2.1.2). For each pair the geometry gives the signed
 // gap s, the normal n (a -> b) and the contact points p_a, p_b (pair_geometry).
@@ -31,10 +36,13 @@
 #include <vector>
 
 #include "planarbench/case.hpp"
+#include "planarbench/contact_pairs.hpp"
 #include "planarbench/reference/coulomb_friction.hpp"
+#include "planarbench/reference/near_pairs.hpp"
 #include "planarbench/reference/ode_system.hpp"
 #include "planarbench/reference/pair_geometry.hpp"
 #include "planarbench/reference/planar_model.hpp"
+#include "planarbench/reference/sparse_stick_solve.hpp"
 
 namespace pb {
 
@@ -68,22 +76,36 @@ class ContactDynamics final : public OdeSystem {
   ContactDynamics(const Case& c, GeometryMode mode, DetectionMode detection = DetectionMode::fast);
 
   [[nodiscard]] int coordinates() const { return model_.coordinates(); }
-  [[nodiscard]] int pair_count() const { return static_cast<int>(pairs_.size()); }
+  [[nodiscard]] int pair_count() const { return pairs_.size(); }
   [[nodiscard]] bool has_friction() const { return has_friction_; }
-  [[nodiscard]] int state_size() const {
-    return 2 * coordinates() + (has_friction_ ? 3 : 1) * pair_count();
-  }
+  [[nodiscard]] bool has_groups() const { return !near_.empty(); }
+  [[nodiscard]] int state_size() const { return 2 * coordinates() + slots() * pair_count(); }
   [[nodiscard]] const PlanarModel& model() const { return model_; }
-  [[nodiscard]] const ContactPair& pair(int k) const { return pairs_[static_cast<std::size_t>(k)]; }
+  [[nodiscard]] const ContactPair& pair(int k) const { return pairs_[k]; }
+  // the pairs evaluated now, ascending: every declared pair and the group
+  // pairs the broad phase found near (all pairs of a case without groups)
+  [[nodiscard]] const std::vector<int>& active() const { return active_; }
   // index of pair k's impulse in y
-  [[nodiscard]] int impulse_index(int k) const { return 2 * coordinates() + k; }
+  [[nodiscard]] int impulse_index(int k) const {
+    return k < declared_ ? 2 * coordinates() + k : group_slot(k);
+  }
   // with friction: index of pair k's tangential impulse and friction dissipation in y
   [[nodiscard]] int tangential_impulse_index(int k) const {
-    return 2 * coordinates() + pair_count() + k;
+    return k < declared_ ? 2 * coordinates() + declared_ + k : group_slot(k) + 1;
   }
   [[nodiscard]] int dissipation_index(int k) const {
-    return 2 * coordinates() + 2 * pair_count() + k;
+    return k < declared_ ? 2 * coordinates() + 2 * declared_ + k : group_slot(k) + 2;
   }
+
+  // Groups: rebuilds the list of near group pairs at y when due
+  // (near_pairs.hpp); new pairs get their slots at the end of y (the caller
+  // grows its vectors to state_size(), the new slots 0). Returns whether the
+  // active pairs changed.
+  bool update_near(const Eigen::VectorXd& y);
+  // the largest fraction of its broad-phase margin a group body moved at y
+  // since the last rebuild; 0 without groups
+  [[nodiscard]] double near_excursion(const Eigen::VectorXd& y) const;
+  [[nodiscard]] long near_rebuilds() const { return near_.rebuilds(); }
 
   // the discrete phase of every pair; f uses it, the solver changes it
   [[nodiscard]] std::vector<PairMode>& modes() { return modes_; }
@@ -137,8 +159,21 @@ class ContactDynamics final : public OdeSystem {
   // added to gen_force_; pairs with friction only (coulomb_friction.hpp)
   void add_damping_couple(int k, const PairEvaluation& e);
 
+  // slots per pair in y: J, or J, Jt, W with friction
+  [[nodiscard]] int slots() const { return has_friction_ ? 3 : 1; }
+  [[nodiscard]] int group_slot(int k) const {
+    return 2 * coordinates() + slots() * k;  // k >= declared_: after every declared slot
+  }
+  // per-pair state for pairs added to pairs_ since the last call
+  void add_pair_state();
+
   PlanarModel model_;
-  std::vector<ContactPair> pairs_;
+  ContactPairs pairs_;
+  int declared_ = 0;
+  std::vector<int> active_;
+  NearPairs near_;
+  std::vector<int> near_scratch_;
+  DetectionMode detection_;
   GeometryMode mode_;
   std::vector<bool> face_;  // per pair: friction on a face (contact_dynamics.cpp)
   std::vector<std::unique_ptr<PairGeometry>> geometry_;
@@ -152,6 +187,7 @@ class ContactDynamics final : public OdeSystem {
   // friction
   bool has_friction_ = false;
   StickSolve stick_;
+  SparseStickSolve sparse_stick_;        // scenes (has_groups)
   std::vector<StickRow> stick_rows_;     // scratch: the sticking pairs' rows
   std::vector<int> stick_pairs_;         // scratch: their pair indices
   std::vector<double> stick_force_n_;    // scratch: their forces

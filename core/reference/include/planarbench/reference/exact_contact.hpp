@@ -17,12 +17,19 @@
 //                         ellipse (Eberly, ellipse_distance.hpp) minus R
 //   polygon - circle      signed distance from the circle's centre to the
 //                         polygon boundary minus R
-// Two polygons are exact already as outlines (pair_geometry.hpp). Not
-// available: ellipse - ellipse, ellipse - polygon, half-plane - half-plane.
+//   polygon - polygon     two convex polygons: their distance apart; pressed
+//                         in, the separating axis test's least overlap and
+//                         the incident face clipped to the reference face,
+//                         the force at its pressed points' depth-weighted
+//                         centroid (exact_contact.cpp)
+// Not available: ellipse - ellipse, ellipse - polygon, concave polygon -
+// polygon (their outlines, pair_geometry.hpp), half-plane - half-plane.
 // With a circle, the penetration is measured through the circle's centre
 // along the other body's normal: the standard definition, and the limit of the
 // outline definition (deepest point) as the outlines get dense.
 #pragma once
+
+#include <vector>
 
 #include "planarbench/case.hpp"
 #include "planarbench/reference/contact_geometry.hpp"
@@ -43,6 +50,10 @@ class ExactContact {
   Shape second_;
   bool swapped_ = false;      // the canonical order is (b, a)
   WorldOutline polygon_;      // a polygon among the two, in its body frame
+  // two convex polygons: their vertices in the body frames, and scratch for
+  // them in the world (evaluate is const: the scratch is the object's own)
+  std::vector<Vec2> local_first_, local_second_;
+  mutable std::vector<Vec2> world_first_, world_second_;
 };
 
 }  // namespace pb

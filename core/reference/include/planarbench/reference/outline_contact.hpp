@@ -110,8 +110,10 @@ struct BoundaryHit {
 // set by its extent, the body's outline is its shape; pair_geometry.hpp), or
 // body a's / b's when that body (a polygon, its points its vertices) has
 // exactly one point inside and the other's points sample a line or curve
-// (vertex_a / vertex_b: a vertex contact acts at the vertex; else `more`)
-enum class ActionPoints { more, a, b, vertex_a, vertex_b };
+// (vertex_a / vertex_b: a vertex contact acts at the vertex; else `more`), or
+// every inside point of both bodies (`both`: continuous as points come and
+// go; outline_kernels.hpp, place_line_of_action)
+enum class ActionPoints { more, a, b, vertex_a, vertex_b, both };
 
 class OutlineContactSearch {
  public:

@@ -60,6 +60,10 @@ class PlanarModel {
   // adds the generalised force of world force f_n applied at world point p_m
   void add_point_force(int body, ConstVectorRef q, const Vec2& p_m, const Vec2& f_n,
                        Eigen::VectorXd& gen_force) const;
+  // the same as sparse entries: the coordinates it acts on (up to 3) and
+  // their generalised forces; returns how many (0 for a fixed body)
+  int point_force_entries(int body, ConstVectorRef q, const Vec2& p_m, const Vec2& f_n, int index[3],
+                          double value[3]) const;
   // adds the generalised force of a couple of torque_nm (N m, counter-clockwise)
   void add_couple(int body, double torque_nm, Eigen::VectorXd& gen_force) const;
   // rad/s, counter-clockwise (0 for a fixed body)

@@ -89,6 +89,7 @@ class ReferenceSolver {
   void contacts(std::vector<ContactSample>& out) const;
   [[nodiscard]] std::vector<ContactEpisode> episodes() const;
   [[nodiscard]] SolverStats stats() const;
+  [[nodiscard]] long near_rebuilds() const { return sys_.near_rebuilds(); }
   // total mechanical energy at time(), J
   [[nodiscard]] double energy_j() const;
   // energy dissipated by friction up to time(), J (0 without friction)
@@ -134,6 +135,14 @@ class ReferenceSolver {
   void accept(double h, std::optional<double> exact_end);
   void apply(const Event& e);
   void refresh_and_settle();
+  // the change of pair k due now (its event function past the phase's bound), if any
+  [[nodiscard]] std::optional<Event> due_now(int k, const PairEvaluation& e) const;
+  // y and the per-pair vectors to the grown pair list (a scene's new pairs)
+  void grow_state();
+  void count_zero_length_event(const Event& ev);
+  [[nodiscard]] bool undoes_zero_length_event(const Event& ev) const;
+  // the held pairs' changes due at the new step start, then none held
+  void settle_grazing();
   void record_samples();
   void refine_peaks(int k, EpisodeState& st);
   void set_output(double t_s);
@@ -160,11 +169,23 @@ class ReferenceSolver {
   // rk45 controller, fixed grid
   double h_next_ = 0.0;
   long grid_next_ = 1;
-  int zero_length_events_ = 0;
+  // zero-length events since the last step of positive length: per pair,
+  // how many and its phase before the first
+  struct ZeroLength {
+    int pair = -1;
+    int count = 0;
+    ContactPhase phase_before = ContactPhase::apart;
+  };
+  std::vector<ZeroLength> zero_length_events_;
+  // pairs held in their phase for this step: their events flip across a
+  // boundary they sit on (step())
+  std::vector<int> grazing_;
   // the progress guard: simulated time at the start of the current window
   double window_t_ = 0.0;
   int stalled_steps_ = 0;  // consecutive accepted steps that left t where it was
   std::vector<Candidate> candidates_;
+  std::vector<std::size_t> order_;  // candidates_ by their secant estimate
+  DenseSegment trial_dense_;        // a scene's trial step's dense output (first_event)
   // the two newest accepted steps
   std::array<Segment, 2> seg_;
   int seg_newest_ = 1;
