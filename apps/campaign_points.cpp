@@ -55,10 +55,12 @@ std::vector<std::size_t> visited(const CampaignAxisPlan& a, bool corners) {
 
 }  // namespace
 
-void check_axis_points(const CampaignPlan& plan, const std::vector<std::string>& set_assignments,
-                       const std::vector<int>& axis_lines, bool quiet) {
+void check_axis_points(const CampaignPlan& plan, bool quiet) {
+  std::vector<std::string> set_assignments;
+  for (const auto& [k, v] : plan.set) set_assignments.push_back(k + "=" + v);
   auto fail = [&](std::size_t axis, const std::string& field, const std::string& what) {
-    throw InputError(plan.file, axis < axis_lines.size() ? axis_lines[axis] : 0, field, what);
+    throw InputError(plan.file, axis < plan.axis_lines.size() ? plan.axis_lines[axis] : 0, field,
+                     what);
   };
   // ---- each axis alone ----
   std::int64_t to_check = 0;

@@ -27,7 +27,8 @@ bool finite_state(const BodyState& s) {
 // A contact an engine reports is data the results file keeps and the gate
 // judges: its force, normal and point must be numbers (issue 49: forces of
 // +inf were written `ok`). NaN is allowed where the engine does not give a
-// value (penetration, tangential force: ContactSample), never infinity, and
+// value (penetration, tangential force, slip: ContactSample), never infinity
+// (the rule reports/src/run_validity.cpp applies to a stored run), and
 // the body indices must name bodies of the case.
 void check_contacts(const Case& c, const std::vector<ContactSample>& contacts, double t) {
   const auto n = static_cast<int>(c.bodies.size());
@@ -40,14 +41,14 @@ void check_contacts(const Case& c, const std::vector<ContactSample>& contacts, d
     const bool finite = std::isfinite(s.force_n) && std::isfinite(s.normal.x()) &&
                         std::isfinite(s.normal.y()) && std::isfinite(s.point_m.x()) &&
                         std::isfinite(s.point_m.y()) && !std::isinf(s.penetration_m) &&
-                        !std::isinf(s.tangential_force_n);
+                        !std::isinf(s.tangential_force_n) && !std::isinf(s.slip_mps);
     if (!finite) {
       throw EngineError(fmt::format(
           "non-finite contact between '{}' and '{}' at t = {:.9g} s (force {} N, normal ({}, {}), "
-          "penetration {} m, tangential force {} N)",
+          "penetration {} m, tangential force {} N, slip {} m/s)",
           c.bodies[static_cast<std::size_t>(s.body_a)].name,
           c.bodies[static_cast<std::size_t>(s.body_b)].name, t, s.force_n, s.normal.x(),
-          s.normal.y(), s.penetration_m, s.tangential_force_n));
+          s.normal.y(), s.penetration_m, s.tangential_force_n, s.slip_mps));
     }
   }
 }

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "planarbench/errors.hpp"
+#include "planarbench/json_integer.hpp"
 #include "planarbench/results_file.hpp"
 
 namespace pb {
@@ -108,7 +109,7 @@ SweepFile read_sweep_file(const fs::path& path) {
   SweepFile s;
   s.provenance = f.provenance;
   try {
-    s.repeat = t.description.at("repeat").get<int>();
+    s.repeat = json_integer<int>(t.description.at("repeat"), "repeat");
     s.quick = t.description.at("quick").get<bool>();
     s.dt_ladder = t.description.at("dt_ladder").get<std::vector<double>>();
     s.rtol_ladder = t.description.at("rtol_ladder").get<std::vector<double>>();
@@ -116,6 +117,8 @@ SweepFile read_sweep_file(const fs::path& path) {
   } catch (const nlohmann::json::exception& e) {
     throw InputError(file, 0, "/campaign@description",
                      fmt::format("is not a sweep's description ({})", e.what()));
+  } catch (const std::runtime_error& e) {  // an integer not as written (json_integer.hpp)
+    throw InputError(file, 0, "/campaign@description", e.what());
   }
   const auto metric = std::find_if(t.metrics.begin(), t.metrics.end(),
                                     [](const CampaignMetric& m) { return m.name == kErrorMetric; });

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "planarbench/errors.hpp"
+#include "planarbench/json_integer.hpp"
 #include "report_campaign.hpp"
 #include "report_svg.hpp"
 
@@ -39,7 +40,7 @@ std::string parameters_text(const Json& model, const Json& values) {
 // the fit whose parameters the model is reported with: the whole-file fit, or the scored one
 const Json* headline_fit(const Json& model) {
   for (const auto& f : model.at("fits")) {
-    const int fold = f.at("fold").get<int>();
+    const int fold = json_integer<int>(f.at("fold"), "fold");
     if (fold == -1 || fold == -2) return &f;
   }
   return nullptr;
@@ -111,7 +112,7 @@ Table convention_table(const Json& d) {
       "of the stored angle and angular velocity (least squares, Pearson r); rule: {}.",
       d.at("convention").at("rule").get<std::string>());
   t.columns = {"angle, angular velocity", "slope", "intercept (kg m^2/s)", "r", "convention"};
-  const int chosen = d.at("convention").at("chosen").get<int>();
+  const int chosen = json_integer<int>(d.at("convention").at("chosen"), "convention.chosen");
   int k = 0;
   for (const auto& f : d.at("convention").at("fits")) {
     t.rows.push_back({f.at("label").get<std::string>(), number(f.at("slope"), "{:.3f}"),
@@ -151,7 +152,7 @@ ImpactsSection section_of(const CampaignTable& t, const std::string& file) {
       "M-norm hardly sees. {} The stored predictions are the dataset's own, judged as given (its README finds them computed "
       "in the angle convention that does not conserve the momentum). Wall times on the machine "
       "in the provenance.",
-      data.at("impacts").get<std::size_t>(), data.at("path").get<std::string>(),
+      json_integer<std::size_t>(data.at("impacts"), "data.impacts"), data.at("path").get<std::string>(),
       data.at("sha256").get<std::string>().substr(0, 16),
       d.at("object").at("semi_axis_a_m").get<double>(), d.at("object").at("semi_axis_b_m").get<double>(),
       d.at("object").at("mass_kg").get<double>(), d.at("object").at("gyration_radius_m").get<double>(),
@@ -165,7 +166,7 @@ ImpactsSection section_of(const CampaignTable& t, const std::string& file) {
                            "parameters shown are the fit on the whole file.",
                            // files written before issue 34 minimised the median alone
                            d.value("objective", std::string("the median eps")),
-                           d.at("folds").get<int>(), d.at("seed").get<std::uint64_t>()));
+                           json_integer<int>(d.at("folds"), "folds"), json_integer<std::uint64_t>(d.at("seed"), "seed")));
   s.tables.push_back(convention_table(d));
 
   // the models
@@ -205,9 +206,9 @@ ImpactsSection section_of(const CampaignTable& t, const std::string& file) {
          optional_number(j, "e_f_mean"), optional_number(j, "e_f_p90"),
          optional_number(j, "spin_eps_median"), number(j.at("abs_error_vx_median_mps")),
          number(j.at("abs_error_vy_median_mps")), number(j.at("abs_error_w_median_radps"), "{:.3f}"),
-         fmt::format("{} of {}", j.at("failed").get<int>(), j.at("impacts").get<int>()),
+         fmt::format("{} of {}", json_integer<int>(j.at("failed"), "failed"), json_integer<int>(j.at("impacts"), "impacts")),
          fmt::format("{:.1f}", m.at("wall_time_s").get<double>())});
-    models.row_status.push_back(j.at("failed").get<int>() > 0 ? "fail" : "");
+    models.row_status.push_back(json_integer<int>(j.at("failed"), "failed") > 0 ? "fail" : "");
   }
   s.tables.push_back(std::move(models));
 
@@ -226,10 +227,10 @@ ImpactsSection section_of(const CampaignTable& t, const std::string& file) {
     for (const auto& m : d.at("models")) {
       if (m.at("parameters").empty()) continue;  // the stored predictions: nothing fitted
       for (const auto& f : m.at("fits")) {
-        const int fold = f.at("fold").get<int>();
+        const int fold = json_integer<int>(f.at("fold"), "fold");
         fits.rows.push_back({m.at("name").get<std::string>(), fold < 0 ? "all" : std::to_string(fold),
                              parameters_text(m, f.at("parameters")), number(f.at("objective")),
-                             std::to_string(f.at("evaluations").get<int>()),
+                             std::to_string(json_integer<int>(f.at("evaluations"), "evaluations")),
                              f.at("stop").get<std::string>(),
                              fmt::format("{:.1f}", f.at("wall_time_s").get<double>())});
       }
@@ -313,6 +314,10 @@ ImpactsSection impacts_section(const CampaignTable& t, const std::string& file) 
                      fmt::format("is not the description of a study of `planarbench impacts fit` "
                                  "or `impacts score` ({})",
                                  e.what()));
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {  // an integer not as written (json_integer.hpp)
+    throw InputError(file, 0, "/campaign description", e.what());
   }
 }
 

@@ -1,4 +1,4 @@
-// Tests for apps/campaign_plan.cpp: the campaign file read into its runs,
+// Tests for apps/campaign_file.cpp and campaign_plan.cpp: the campaign file read into its runs,
 // their order, their settings, the seeded perturbations and the shards.
 #include "campaign_plan.hpp"
 #include "campaign_shards.hpp"

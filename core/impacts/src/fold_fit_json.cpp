@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "planarbench/impacts/impact_study.hpp"
+#include "planarbench/json_integer.hpp"
 
 namespace pb {
 
@@ -43,22 +44,24 @@ FoldFit fold_fit_from_json(const nlohmann::json& j) {
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   FoldFit f;
   f.model = j.at("model").get<std::string>();
-  f.fold = j.at("fold").get<int>();
+  f.fold = json_integer<int>(j.at("fold"), "fold");
   f.fit.parameters = j.at("parameters").get<std::vector<double>>();
   f.fit.objective = j.at("objective").is_null() ? kNaN : j.at("objective").get<double>();
-  f.fit.evaluations = j.at("evaluations").get<int>();
+  f.fit.evaluations = json_integer<int>(j.at("evaluations"), "evaluations");
   f.fit.stop = j.at("stop").get<std::string>();
   f.wall_time_s = j.at("wall_time_s").get<double>();
-  f.predicted = j.at("predicted").get<std::vector<std::size_t>>();
-  for (const auto& o : j.at("outcomes")) {
+  f.predicted = json_integers<std::size_t>(j.at("predicted"), "predicted");
+  const auto& outcomes = j.at("outcomes");
+  for (std::size_t k = 0; k < outcomes.size(); ++k) {
+    const auto& o = outcomes[k];
     ImpactOutcome out;
     out.after.angle_rad = o.at(0).get<double>();
     out.after.velocity_mps = Vec2(o.at(1).get<double>(), o.at(2).get<double>());
     out.after.angular_velocity_radps = o.at(3).get<double>();
     out.read_time_s = o.at(4).get<double>();
     out.contact_s = o.at(5).get<double>();
-    out.episodes = o.at(6).get<int>();
-    out.steps = o.at(7).get<long>();
+    out.episodes = json_integer<int>(o.at(6), fmt::format("outcomes[{}][6] (episodes)", k));
+    out.steps = json_integer<long>(o.at(7), fmt::format("outcomes[{}][7] (steps)", k));
     out.failure = o.at(8).get<std::string>();
     f.outcomes.push_back(std::move(out));
   }

@@ -11,6 +11,7 @@
 
 #include "planarbench/errors.hpp"
 #include "planarbench/impacts/impact_identification.hpp"
+#include "planarbench/json_integer.hpp"
 #include "planarbench/run_result.hpp"
 
 namespace pb {
@@ -298,7 +299,7 @@ FrozenParameters frozen_parameters(const CampaignTable& fit, const std::string& 
     out.objective = *o;
     for (const auto& m : d.at("models")) {
       for (const auto& f : m.at("fits")) {
-        if (f.at("fold").get<int>() != kWholeFile) continue;
+        if (json_integer<int>(f.at("fold"), "fold") != kWholeFile) continue;
         out.models.emplace_back(m.at("name").get<std::string>(),
                                 f.at("parameters").get<std::vector<double>>());
       }
@@ -309,6 +310,10 @@ FrozenParameters frozen_parameters(const CampaignTable& fit, const std::string& 
                      fmt::format("is not the description of a fit of `planarbench impacts fit` "
                                  "({})",
                                  e.what()));
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {  // an integer not as written (json_integer.hpp)
+    throw InputError(path, 0, "/campaign description models", e.what());
   }
   if (out.models.empty()) {
     throw InputError(path, 0, "/campaign description models",
