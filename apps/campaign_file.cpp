@@ -154,8 +154,7 @@ std::string axis_unit(const std::string& key) {
 
 }  // namespace
 
-CampaignPlan load_campaign(const fs::path& file, const std::string& cases_dir_option, bool quiet,
-                           AxisPointCheck point_check) {
+CampaignPlan load_campaign(const fs::path& file, const std::string& cases_dir_option, bool quiet) {
   CampaignPlan plan;
   plan.file = file.string();
   const Reader in(plan.file);
@@ -440,7 +439,7 @@ CampaignPlan load_campaign(const fs::path& file, const std::string& cases_dir_op
     plan.axis_lines.push_back(
         static_cast<int>((*root.get("axis")->as_array())[k].source().begin.line));
   }
-  if (point_check == AxisPointCheck::now) check_axis_points(plan, quiet);
+  check_axis_points(plan, quiet);
   return plan;
 }
 

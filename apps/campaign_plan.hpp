@@ -119,15 +119,9 @@ struct CampaignPlan {
 // every axis point checked against every case and engine before anything runs.
 // A campaign whose plan would not fit its memory limit is refused
 // (campaign_size.hpp: 32 bytes per run, 1 GiB, at most 33,554,432 runs).
-// With `quiet` false, a long check says how far it is on stderr. With
-// `point_check` AxisPointCheck::by_caller the axis points are left to the caller
-// (check_axis_points, campaign_points.hpp): `campaign plan` states the cost of
-// a campaign first and checks its points after (issue 49: a 1e6-point axis
-// took 65 s of checks before its cost was said).
-enum class AxisPointCheck { now, by_caller };
+// With `quiet` false, a long check says how far it is on stderr.
 [[nodiscard]] CampaignPlan load_campaign(const std::filesystem::path& file,
-                                         const std::string& cases_dir_option, bool quiet = true,
-                                         AxisPointCheck point_check = AxisPointCheck::now);
+                                         const std::string& cases_dir_option, bool quiet = true);
 
 // The metrics a campaign may record (name, unit, what), "trace" included.
 [[nodiscard]] const std::vector<CampaignMetric>& campaign_metrics();

@@ -84,31 +84,6 @@ TEST(CmdCampaign, PlanCountsTheRunsAndEstimatesTheirCost) {
   EXPECT_NE(f.err.find("4 shards: "), std::string::npos) << f.err;
 }
 
-// The plan states its cost before it checks the axis points (issue 49: a
-// 1e6-point axis took 65 s of checks before its cost was said); a point the
-// case refuses still ends the plan with exit 2, naming the axis and its line.
-TEST(CmdCampaign, PlanStatesTheCostBeforeARefusedPointEndsIt) {
-  const fs::path dir = fresh_dir("plan_cost_first");
-  // run_shell: the plan's stdout and stderr in one stream, in their order
-  const Finished f = run_shell(std::string(PB_EXE) + " campaign plan " + campaign_file(dir, R"(
-[campaign]
-cases = ["falling_ball"]
-engines = ["analytic"]
-metrics = ["events"]
-
-[[axis]]
-key = "output_interval"
-values = [1e-3, 1e3]
-)").string());
-  EXPECT_EQ(f.exit.code, 2) << f.err;
-  const auto cost = f.err.find("estimated cost: ");
-  const auto refused = f.err.find("study.toml:7: axis[0]: at 1000 on case 'falling_ball'");
-  ASSERT_NE(cost, std::string::npos) << f.err;
-  ASSERT_NE(refused, std::string::npos) << f.err;
-  EXPECT_LT(cost, refused) << f.err;
-  EXPECT_EQ(f.err.find("axis points: every one checked"), std::string::npos) << f.err;
-}
-
 // A plan that takes more than a second says how far it is on stderr (issue
 // 24): 1,000,000 runs of one case and engine (nothing runs; the plan costs
 // each run and deals them to 4 shards), about 1.5 s on the 2-core machine of
